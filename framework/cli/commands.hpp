@@ -1,0 +1,37 @@
+#pragma once
+// The kestrel CLI's subcommands. Each returns the process exit code (see docs/cli.md).
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace kestrel::cli {
+
+enum ExitCode : int {
+  kOk = 0,
+  kRunFailed = 1,     // a node error under on_error: stop, or a node could not start
+  kUsage = 2,         // bad command line
+  kInvalidGraph = 3,  // the graph file is unreadable or fails validation
+  kNotFound = 4,      // unknown type for inspect, or a plugin was refused
+};
+
+struct GraphArgs {
+  std::string graph;
+  std::vector<std::string> overrides;  // --set node.param=value
+};
+
+struct RunArgs : GraphArgs {
+  std::optional<double> duration_s;
+  std::optional<std::uint64_t> seed;
+  std::string report_dir;
+  bool stats = false;
+  bool progress = true;
+};
+
+int run_command(const RunArgs& args);
+int validate_command(const GraphArgs& args);
+int dot_command(const GraphArgs& args, const std::string& output);
+int plugins_command();
+int inspect_command(const std::string& name);
+
+}  // namespace kestrel::cli

@@ -1,0 +1,61 @@
+// kestrel: run, validate, inspect and draw dataflow graphs of plugins.
+#include <CLI/CLI.hpp>
+#include <spdlog/spdlog.h>
+
+#include "commands.hpp"
+#include "kestrel/version.hpp"
+
+int main(int argc, char** argv) {
+  using namespace kestrel::cli;
+  CLI::App app{"kestrel: perception-and-control dataflow runtime.\n"
+               "Exit codes: 0 ok, 1 run failed, 2 bad command line, 3 invalid graph, 4 not found / plugin refused."};
+  app.set_version_flag("--version", std::string("kestrel ") + KESTREL_VERSION_STRING);
+  app.require_subcommand(1);
+  std::string log_level = "info";
+  app.add_option("--log-level", log_level, "debug, info, warn or error")
+      ->check(CLI::IsMember({"debug", "info", "warn", "error"}));
+
+  RunArgs run;
+  auto* run_cmd = app.add_subcommand("run", "Validate a graph, then run it");
+  run_cmd->add_option("graph", run.graph, "graph YAML file")->required();
+  run_cmd->add_option("--set", run.overrides, "override a parameter: node.param=value (repeatable)");
+  run_cmd->add_option("--duration", run.duration_s, "run length in seconds (sim time for lockstep)");
+  run_cmd->add_option("--seed", run.seed, "random seed (overrides the graph's)");
+  run_cmd->add_option("--report", run.report_dir, "write DIR/report.json and DIR/report.md");
+  run_cmd->add_flag("--stats", run.stats, "print per-node and per-connection statistics at the end");
+  run_cmd->add_flag("!--no-progress", run.progress, "no status line on the terminal");
+
+  GraphArgs validate;
+  auto* validate_cmd = app.add_subcommand("validate", "Check a graph and report every problem with file:line:col");
+  validate_cmd->add_option("graph", validate.graph, "graph YAML file")->required();
+  validate_cmd->add_option("--set", validate.overrides, "override a parameter: node.param=value (repeatable)");
+
+  GraphArgs dot;
+  std::string dot_output;
+  auto* dot_cmd = app.add_subcommand("dot", "Print a graph in Graphviz dot");
+  dot_cmd->add_option("graph", dot.graph, "graph YAML file")->required();
+  dot_cmd->add_option("--set", dot.overrides, "override a parameter: node.param=value (repeatable)");
+  dot_cmd->add_option("-o,--output", dot_output, "write to this file instead of stdout");
+
+  auto* plugins_cmd = app.add_subcommand("plugins", "List every node type, component and message type");
+
+  std::string inspect_name;
+  auto* inspect_cmd = app.add_subcommand("inspect", "Show a node type's ports and parameters (or a component's)");
+  inspect_cmd->add_option("type", inspect_name, "node type, component (kind/name or name) or message type")->required();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kOk : kUsage;
+  }
+  spdlog::set_level(spdlog::level::from_str(log_level));
+  spdlog::set_pattern("[%l] %v");
+
+  if (*run_cmd) return run_command(run);
+  if (*validate_cmd) return validate_command(validate);
+  if (*dot_cmd) return dot_command(dot, dot_output);
+  if (*plugins_cmd) return plugins_command();
+  if (*inspect_cmd) return inspect_command(inspect_name);
+  return kUsage;
+}

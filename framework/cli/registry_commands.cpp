@@ -1,0 +1,136 @@
+// plugins and inspect: the commands that describe what the loaded plugins provide.
+#include <fmt/format.h>
+
+#include <cstdio>
+
+#include "commands.hpp"
+#include "kestrel/runtime/diagnostics.hpp"
+#include "kestrel/runtime/plugin_host.hpp"
+
+namespace kestrel::cli {
+
+namespace {
+
+std::unique_ptr<PluginHost> load_plugins() {
+  auto host = std::make_unique<PluginHost>();
+  host->load_search_path();
+  return host;
+}
+
+void print_errors(const PluginHost& host) {
+  if (host.errors().empty()) return;
+  std::fprintf(stderr, "\n%zu plugin file(s) refused:\n", host.errors().size());
+  for (const auto& e : host.errors()) std::fprintf(stderr, "  %s\n", e.message.c_str());
+}
+
+std::string describe_param(const ParamSpec& p) {
+  std::string type = p.type == ParamType::component ? "component<" + p.component_kind + ">" : to_string(p.type);
+  std::string line = fmt::format("    {:<22} {:<22}", p.name, type);
+  line += p.default_value ? fmt::format(" default {}", to_string(*p.default_value)) : std::string(" required");
+  if (!p.unit.empty()) line += " " + p.unit;
+  if (p.min || p.max)
+    line += fmt::format("  range [{}, {}]", p.min ? fmt::format("{}", *p.min) : "-inf",
+                        p.max ? fmt::format("{}", *p.max) : "inf");
+  if (!p.allowed.empty()) line += fmt::format("  one of {{{}}}", fmt::join(p.allowed, ", "));
+  line += "\n      " + p.description + "\n";
+  return line;
+}
+
+void print_params(const std::vector<ParamSpec>& params) {
+  std::printf("\nParameters:\n");
+  if (params.empty()) std::printf("    none\n");
+  for (const auto& p : params) std::fputs(describe_param(p).c_str(), stdout);
+}
+
+void inspect_node(const NodeType& type, const Registry& registry) {
+  const auto& spec = type.spec;
+  std::printf("Node type %s\n  %s\n  plugin: %s\n", spec.type().c_str(), spec.summary().c_str(),
+              type.plugin.empty() ? "(framework)" : type.plugin.c_str());
+  if (!spec.details().empty()) std::printf("\n%s\n", spec.details().c_str());
+  std::printf("\nInputs:\n");
+  if (spec.inputs().empty()) std::printf("    none (a source)\n");
+  for (const auto& p : spec.inputs())
+    std::printf("    %-22s %-26s %s%s\n      %s\n", p.name.c_str(), p.type.c_str(),
+                p.trigger == Trigger::on_message ? "triggers" : "latest value",
+                p.optional ? ", optional" : "", p.description.c_str());
+  std::printf("\nOutputs:\n");
+  if (spec.outputs().empty()) std::printf("    none (a sink)\n");
+  for (const auto& p : spec.outputs())
+    std::printf("    %-22s %-26s\n      %s\n", p.name.c_str(), p.type.c_str(), p.description.c_str());
+  print_params(spec.params());
+  for (const auto& p : spec.params()) {
+    if (p.type != ParamType::component) continue;
+    std::printf("\n  '%s' accepts these %s components: %s\n", p.name.c_str(), p.component_kind.c_str(),
+                fmt::format("{}", fmt::join(registry.component_names(p.component_kind), ", ")).c_str());
+  }
+}
+
+}  // namespace
+
+int plugins_command() {
+  auto host = load_plugins();
+  const Registry& registry = host->registry();
+  for (const auto& plugin : host->plugins()) {
+    std::printf("%s %s  (%s)\n  %s\n", plugin.name.c_str(), plugin.version.c_str(), plugin.file.string().c_str(),
+                plugin.description.c_str());
+    for (const auto& type : plugin.node_types)
+      std::printf("    node       %-24s %s\n", type.c_str(), registry.find_node(type)->spec.summary().c_str());
+    for (const auto& key : plugin.components)
+      std::printf("    component  %-24s %s\n", key.c_str(), registry.components().find(key)->second.spec.summary().c_str());
+    for (const auto& m : plugin.messages)
+      std::printf("    message    %-24s %s\n", m.c_str(), registry.find_message(m)->info.description.c_str());
+  }
+  std::printf("framework message types:\n");
+  for (const auto& [name, m] : registry.messages())
+    if (m.plugin.empty() && name != "*") std::printf("    message    %-24s %s\n", name.c_str(), m.info.description.c_str());
+  if (host->plugins().empty()) {
+    std::string path;
+    for (const auto& dir : PluginHost::search_path()) {
+      if (!path.empty()) path += ':';
+      path += dir.string();
+    }
+    std::printf("no plugins found in: %s\n", path.c_str());
+  }
+  print_errors(*host);
+  return host->errors().empty() ? kOk : kNotFound;
+}
+
+int inspect_command(const std::string& name) {
+  auto host = load_plugins();
+  const Registry& registry = host->registry();
+  if (const NodeType* type = registry.find_node(name)) {
+    inspect_node(*type, registry);
+    return kOk;
+  }
+  std::vector<const ComponentType*> matches;
+  for (const auto& [key, c] : registry.components())
+    if (key == name || c.spec.name() == name) matches.push_back(&c);
+  if (matches.size() == 1) {
+    const ComponentType& c = *matches.front();
+    std::printf("Component %s/%s\n  %s\n  plugin: %s\n", c.kind.c_str(), c.spec.name().c_str(),
+                c.spec.summary().c_str(), c.plugin.c_str());
+    if (!c.spec.details().empty()) std::printf("\n%s\n", c.spec.details().c_str());
+    print_params(c.spec.params());
+    return kOk;
+  }
+  if (matches.size() > 1) {
+    std::fprintf(stderr, "'%s' names several components; say which: ", name.c_str());
+    for (const auto* c : matches) std::fprintf(stderr, "%s/%s ", c->kind.c_str(), c->spec.name().c_str());
+    std::fprintf(stderr, "\n");
+    return kNotFound;
+  }
+  if (const MessageTypeEntry* m = registry.find_message(name)) {
+    std::printf("Message type %s\n  %s\n  from: %s\n", name.c_str(), m->info.description.c_str(),
+                m->plugin.empty() ? "(framework)" : m->plugin.c_str());
+    return kOk;
+  }
+  std::vector<std::string> names = registry.node_type_names();
+  for (const auto& [key, c] : registry.components()) names.push_back(c.spec.name());
+  const std::string near = nearest_name(name, names);
+  std::fprintf(stderr, "no node type, component or message type named '%s'%s\n", name.c_str(),
+               near.empty() ? "" : fmt::format(" (did you mean '{}'?)", near).c_str());
+  print_errors(*host);
+  return kNotFound;
+}
+
+}  // namespace kestrel::cli

@@ -1,0 +1,42 @@
+#pragma once
+// The tracks a tracker maintains, and which one is the selected target.
+#include <Eigen/Core>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kestrel/message.hpp"
+
+namespace kestrel::msg {
+
+struct Track {
+  std::uint64_t id = 0;
+  int age = 0;     ///< frames since birth
+  int hits = 0;    ///< frames with an associated detection
+  int misses = 0;  ///< consecutive frames without one
+  /// Filter state; for the constant-acceleration model [x y z vx vy vz ax ay az].
+  Eigen::VectorXd state;
+  Eigen::MatrixXd covariance;
+
+  Eigen::Vector3d position() const { return state.head<3>(); }
+};
+
+struct Tracks {
+  Time stamp{0};
+  std::string frame = "camera";
+  std::vector<Track> items;
+  std::optional<std::uint64_t> selected_id;  ///< the target to aim at, if any
+
+  const Track* selected() const {
+    if (!selected_id) return nullptr;
+    for (const auto& t : items)
+      if (t.id == *selected_id) return &t;
+    return nullptr;
+  }
+};
+
+}  // namespace kestrel::msg
+
+KESTREL_MESSAGE(kestrel::msg::Tracks, "kestrel.Tracks",
+                "tracks with id, age, hits, misses, state, covariance and the selected target");

@@ -1,0 +1,159 @@
+#pragma once
+// What a plugin author implements: a Node, built from a NodeInit, called with a Context.
+//
+//   class Doubler final : public kestrel::Node {
+//    public:
+//     static constexpr kestrel::Input<Number> kIn{"in"};
+//     static constexpr kestrel::Output<Number> kOut{"out"};
+//     static kestrel::NodeSpec spec() {
+//       return kestrel::NodeSpec("doubler", "Multiplies each number by a factor")
+//           .input(kIn, "numbers").output(kOut, "scaled numbers")
+//           .param(kestrel::param("factor", 2.0).describe("multiplier"));
+//     }
+//     explicit Doubler(kestrel::NodeInit& init) : factor_(init.param<double>("factor")) {}
+//     void process(kestrel::Context& ctx) override {
+//       ctx.publish(kOut, Number{ctx.get(kIn)->value * factor_});
+//     }
+//    private:
+//     double factor_;
+//   };
+//   KESTREL_REGISTER_NODE(Doubler)
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <random>
+#include <string>
+#include <string_view>
+
+#include "kestrel/error.hpp"
+#include "kestrel/logger.hpp"
+#include "kestrel/message.hpp"
+#include "kestrel/node_spec.hpp"
+#include "kestrel/params.hpp"
+#include "kestrel/ports.hpp"
+#include "kestrel/report.hpp"
+#include "kestrel/time.hpp"
+
+namespace kestrel {
+
+namespace detail {
+class NodeRuntime;
+}
+class Registry;
+
+/// Everything an executor calls on a node. All calls for one node come from one thread at a
+/// time, so a node needs no locking of its own state.
+class Node {
+ public:
+  virtual ~Node() = default;
+
+  /// Called once per message on a triggering input (see InputOptions::trigger).
+  virtual void process(class Context& ctx);
+  /// Called every period set with NodeInit::set_period, starting at time zero.
+  virtual void tick(class Context& ctx);
+  /// Called once at the end of the run, after every input has drained: flush files, add to the
+  /// report. Still called after a node error stopped the run.
+  virtual void finish(class Context& ctx);
+};
+
+/// What a node's constructor gets: its identity, its validated parameters, and the means to
+/// build its components and to ask for a timer.
+class NodeInit {
+ public:
+  NodeInit(std::string id, const NodeSpec& spec, const Params& params, const Registry& registry,
+           std::uint64_t seed, Logger& log)
+      : id_(std::move(id)), spec_(spec), params_(params), registry_(registry), seed_(seed), log_(log) {}
+
+  const std::string& id() const { return id_; }
+  const NodeSpec& spec() const { return spec_; }
+  const Params& params() const { return params_; }
+  template <class T>
+  T param(const std::string& name) const {
+    return params_.get<T>(name);
+  }
+
+  /// Builds the component named by component parameter `param_name`. Interface must declare
+  /// `static constexpr std::string_view kKind` matching the parameter's kind.
+  template <class Interface>
+  std::shared_ptr<Interface> make_component(const std::string& param_name) const {
+    return std::static_pointer_cast<Interface>(make_component_erased(param_name, Interface::kKind));
+  }
+
+  /// Asks for tick() every `period`, from time zero. Sources use this.
+  void set_period(Duration period);
+  Duration period() const { return period_; }
+
+  /// A seed derived from the run's seed and this node's id: stable across runs and distinct
+  /// between nodes.
+  std::uint64_t seed() const { return seed_; }
+  Logger& log() const { return log_; }
+
+ private:
+  std::shared_ptr<void> make_component_erased(const std::string& param_name,
+                                              std::string_view kind) const;
+
+  std::string id_;
+  const NodeSpec& spec_;
+  const Params& params_;
+  const Registry& registry_;
+  std::uint64_t seed_;
+  Logger& log_;
+  Duration period_{0};
+};
+
+/// A node's view of the run while it processes a message or a tick.
+class Context {
+ public:
+  explicit Context(detail::NodeRuntime& runtime) : rt_(runtime) {}
+
+  /// The message on `port`: the one that triggered this call, or the newest one received.
+  /// Null if nothing has arrived yet (or the optional input is unconnected).
+  template <MessageType T>
+  std::shared_ptr<const T> get(const Input<T>& port) const {
+    return std::static_pointer_cast<const T>(envelope(port.name).payload);
+  }
+  /// The envelope on an input: payload, type name, publish time and sequence number.
+  const Envelope& envelope(std::string_view input) const;
+
+  /// True if this call was triggered by a message on `port`.
+  template <MessageType T>
+  bool triggered_by(const Input<T>& port) const {
+    return trigger() == port.name;
+  }
+  /// Name of the input whose message triggered this call; empty for tick() and finish().
+  std::string_view trigger() const;
+
+  template <MessageType T>
+  void publish(const Output<T>& port, std::shared_ptr<const T> message) {
+    publish_erased(port.name, std::shared_ptr<const void>(std::move(message)),
+                   MessageTraits<T>::name);
+  }
+  template <MessageType T>
+  void publish(const Output<T>& port, T message) {
+    publish(port, std::make_shared<const T>(std::move(message)));
+  }
+
+  /// Now, on the run's clock.
+  Time now() const;
+  const std::string& id() const;
+  Logger& log();
+  /// This node's random generator, seeded from NodeInit::seed(). Use it, not a private one, so
+  /// that lockstep runs reproduce.
+  std::mt19937_64& rng();
+  /// The run report. Sections set here are owned by this node.
+  void set_report_section(const std::string& key, nlohmann::json value, std::string markdown = {});
+  const std::filesystem::path& artifact_dir() const;
+
+  /// A source says it has nothing more to publish; it gets no more ticks. The run ends when every
+  /// source has ended (or at its duration).
+  void end_of_stream();
+  /// Ends the whole run cleanly, as a signal would.
+  void request_stop();
+
+ private:
+  void publish_erased(std::string_view output, std::shared_ptr<const void> payload,
+                      std::string_view type);
+  detail::NodeRuntime& rt_;
+};
+
+}  // namespace kestrel

@@ -1,0 +1,49 @@
+#pragma once
+// Typed port handles. A node declares each port once, as a static constant, and uses the same
+// constant in its NodeSpec and when it reads or publishes:
+//
+//   static constexpr kestrel::Input<msg::PointCloud> kCloud{"cloud"};
+//   ...  spec.input(kCloud, "camera-frame points");
+//   ...  auto cloud = ctx.get(kCloud);
+#include <string>
+#include <string_view>
+
+#include "kestrel/message.hpp"
+
+namespace kestrel {
+
+template <MessageType T>
+struct Input {
+  using type = T;
+  std::string_view name;
+  constexpr explicit Input(std::string_view port_name) : name(port_name) {}
+};
+
+template <MessageType T>
+struct Output {
+  using type = T;
+  std::string_view name;
+  constexpr explicit Output(std::string_view port_name) : name(port_name) {}
+};
+
+/// How a message arriving on an input affects its node.
+enum class Trigger {
+  on_message,  ///< each message calls process() once
+  latest,      ///< the newest message is kept and read when something else triggers the node
+};
+
+struct InputOptions {
+  Trigger trigger = Trigger::on_message;
+  bool optional = false;  ///< may be left unconnected; get() then returns null
+};
+
+/// A port as the registry, the validator and `kestrel inspect` see it.
+struct PortSpec {
+  std::string name;
+  std::string type;  ///< message type name; "*" accepts any type
+  std::string description;
+  Trigger trigger = Trigger::on_message;
+  bool optional = false;
+};
+
+}  // namespace kestrel

@@ -1,0 +1,192 @@
+#include <chrono>
+
+#include "run_state.hpp"
+
+namespace kestrel {
+
+void Node::process(Context&) {
+  throw Error("this node type has a triggering input but does not implement process()");
+}
+void Node::tick(Context&) {}
+void Node::finish(Context&) {}
+
+void NodeInit::set_period(Duration period) {
+  if (period <= Duration::zero()) throw Error("node '" + id_ + "': a timer period must be positive");
+  period_ = period;
+}
+
+std::shared_ptr<void> NodeInit::make_component_erased(const std::string& param_name,
+                                                      std::string_view kind) const {
+  const ParamSpec* spec = spec_.find_param(param_name);
+  if (!spec || spec->type != ParamType::component)
+    throw Error("node '" + id_ + "': '" + param_name + "' is not a component parameter in spec()");
+  if (spec->component_kind != kind)
+    throw Error("node '" + id_ + "': parameter '" + param_name + "' holds a " + spec->component_kind +
+                ", not a " + std::string(kind));
+  const auto config = params_.get<ComponentConfig>(param_name);
+  const ComponentType* type = registry_.find_component(kind, config.type);
+  if (!type) throw Error("node '" + id_ + "': no " + std::string(kind) + " named '" + config.type + "'");
+  static const Params kNoParams;
+  return type->factory(config.params ? *config.params : kNoParams);
+}
+
+const Envelope& Context::envelope(std::string_view input) const {
+  for (auto& slot : rt_.inputs)
+    if (slot.spec->name == input) return slot.current;
+  throw Error("node '" + rt_.id() + "' has no input named '" + std::string(input) + "'");
+}
+
+std::string_view Context::trigger() const {
+  if (rt_.current_trigger < 0) return {};
+  return rt_.inputs[static_cast<std::size_t>(rt_.current_trigger)].spec->name;
+}
+
+void Context::publish_erased(std::string_view output, std::shared_ptr<const void> payload,
+                             std::string_view type) {
+  rt_.publish(output, std::move(payload), type);
+}
+
+Time Context::now() const { return rt_.run->executor->now(); }
+const std::string& Context::id() const { return rt_.id(); }
+Logger& Context::log() { return *rt_.logger; }
+std::mt19937_64& Context::rng() { return rt_.rng; }
+void Context::set_report_section(const std::string& key, nlohmann::json value, std::string markdown) {
+  rt_.run->report.set_section(rt_.id(), key, std::move(value), std::move(markdown));
+}
+const std::filesystem::path& Context::artifact_dir() const { return rt_.run->report.artifact_dir(); }
+void Context::end_of_stream() { rt_.source_ended = true; }
+void Context::request_stop() { rt_.run->stop_requested = true; }
+
+namespace detail {
+
+bool NodeRuntime::has_triggering_input() const {
+  for (const auto& slot : inputs)
+    if (slot.edge && slot.triggers()) return true;
+  return false;
+}
+
+bool NodeRuntime::call(Call what) {
+  Context ctx(*this);
+  const auto start = std::chrono::steady_clock::now();
+  bool ok = true;
+  try {
+    switch (what) {
+      case Call::process: node->process(ctx); break;
+      case Call::tick: node->tick(ctx); break;
+      case Call::finish: node->finish(ctx); break;
+    }
+  } catch (const std::exception& e) {
+    ok = false;
+    run->node_error(*this, e.what());
+  } catch (...) {
+    ok = false;
+    run->node_error(*this, "unknown exception");
+  }
+  if (what != Call::finish) {
+    processing.record(std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start).count());
+    calls.fetch_add(1, std::memory_order_relaxed);
+  }
+  return ok;
+}
+
+void NodeRuntime::publish(std::string_view output, std::shared_ptr<const void> payload, std::string_view type) {
+  const int index = config->type->spec.output_index(output);
+  if (index < 0) throw Error("published on '" + std::string(output) + "', which is not an output of " + this->type());
+  const PortSpec& port = config->type->spec.outputs()[static_cast<std::size_t>(index)];
+  if (port.type != type)
+    throw Error("published a " + std::string(type) + " on output '" + port.name + "', declared as " + port.type);
+  if (!payload) throw Error("published a null message on output '" + port.name + "'");
+  const Envelope envelope{std::move(payload), type, run->executor->now(),
+                          run->next_sequence.fetch_add(1, std::memory_order_relaxed)};
+  messages_out.fetch_add(1, std::memory_order_relaxed);
+  for (Edge* edge : outputs[static_cast<std::size_t>(index)]) run->executor->deliver(*edge, envelope);
+}
+
+RunState::RunState(const GraphConfig& g, const Registry& r, const RunOptions& o)
+    : graph(g), registry(r), options(o) {}
+
+std::uint64_t node_seed(std::uint64_t run_seed, const std::string& node_id) {
+  // FNV-1a over the id, mixed with the run seed by splitmix64: the same on every platform.
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : node_id) h = (h ^ c) * 1099511628211ull;
+  std::uint64_t z = run_seed + h + 0x9e3779b97f4a7c15ull;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return z ^ (z >> 31);
+}
+
+bool RunState::instantiate() {
+  const std::uint64_t seed = options.seed.value_or(graph.seed);
+  for (std::size_t i = 0; i < graph.nodes.size(); ++i) {
+    const NodeConfig& config = graph.nodes[i];
+    auto rt = std::make_unique<NodeRuntime>();
+    rt->index = static_cast<int>(i);
+    rt->config = &config;
+    rt->run = this;
+    rt->logger = std::make_unique<Logger>(config.id);
+    rt->rng.seed(node_seed(seed, config.id));
+    const NodeSpec& spec = config.type->spec;
+    for (const auto& port : spec.inputs()) {
+      InputSlot slot;
+      slot.spec = &port;
+      rt->inputs.push_back(std::move(slot));
+    }
+    rt->outputs.resize(spec.outputs().size());
+    nodes.push_back(std::move(rt));
+  }
+  for (const auto& c : graph.connections) {
+    auto edge = std::make_unique<Edge>();
+    edge->config = &c;
+    edge->from = nodes[static_cast<std::size_t>(c.from_node)].get();
+    edge->to = nodes[static_cast<std::size_t>(c.to_node)].get();
+    edge->to_port = c.to_port;
+    edge->to->inputs[static_cast<std::size_t>(c.to_port)].edge = edge.get();
+    edge->from->outputs[static_cast<std::size_t>(c.from_port)].push_back(edge.get());
+    edges.push_back(std::move(edge));
+  }
+  for (int i : graph.topological_order) order.push_back(nodes[static_cast<std::size_t>(i)].get());
+
+  bool ok = true;
+  for (auto& rt : nodes) {
+    NodeInit init(rt->id(), rt->config->type->spec, rt->config->params, registry,
+                  node_seed(seed, rt->id()), *rt->logger);
+    try {
+      rt->node = rt->config->type->factory(init);
+      rt->period = init.period();
+    } catch (const std::exception& e) {
+      ok = false;
+      node_error(*rt, std::string("could not start: ") + e.what());
+    }
+  }
+  return ok;
+}
+
+bool RunState::stopping() const {
+  return stop_requested.load() || failed.load() ||
+         (options.stop_flag != nullptr && options.stop_flag->load());
+}
+
+void RunState::node_error(NodeRuntime& node, const std::string& what) {
+  node.errors.fetch_add(1, std::memory_order_relaxed);
+  const std::string message = "node '" + node.id() + "' (" + node.type() + "): " + what;
+  {
+    std::lock_guard lock(errors_mutex_);
+    // Keep the first errors whole; a node failing on every message must not grow memory.
+    if (errors_.size() < 100) errors_.push_back(message);
+  }
+  if (graph.on_error == ErrorPolicy::stop || !node.node) {
+    failed = true;
+    node.logger->error("{}", what);
+  } else if (node.errors.load() <= 10) {
+    node.logger->warn("{} (message dropped; on_error: skip){}", what,
+                      node.errors.load() == 10 ? " - further errors of this node are counted, not logged" : "");
+  }
+}
+
+std::vector<std::string> RunState::errors() const {
+  std::lock_guard lock(errors_mutex_);
+  return errors_;
+}
+
+}  // namespace detail
+}  // namespace kestrel

@@ -1,0 +1,81 @@
+#include "kestrel/registry.hpp"
+
+#include "kestrel/messages/actuator_command.hpp"
+#include "kestrel/messages/detections.hpp"
+#include "kestrel/messages/ground_truth.hpp"
+#include "kestrel/messages/point_cloud.hpp"
+#include "kestrel/messages/stereo_frame.hpp"
+#include "kestrel/messages/tracks.hpp"
+#include "kestrel/messages/trajectory_setpoint.hpp"
+#include "kestrel/messages/vehicle_state.hpp"
+
+namespace kestrel {
+
+namespace {
+std::string origin(const std::string& plugin) { return plugin.empty() ? "the framework" : plugin; }
+}  // namespace
+
+Registry::Registry() {
+  add_message<msg::StereoFrame>();
+  add_message<msg::PointCloud>();
+  add_message<msg::Detections>();
+  add_message<msg::Tracks>();
+  add_message<msg::VehicleState>();
+  add_message<msg::TrajectorySetpoint>();
+  add_message<msg::ActuatorCommand>();
+  add_message<msg::GroundTruth>();
+}
+
+void Registry::add_node(NodeSpec spec, NodeFactory factory) {
+  const std::string type = spec.type();
+  if (auto it = nodes_.find(type); it != nodes_.end())
+    throw Error("node type '" + type + "' is registered twice: by " + origin(it->second.plugin) +
+                " and by " + origin(current_plugin_));
+  nodes_.emplace(type, NodeType{std::move(spec), std::move(factory), current_plugin_});
+}
+
+void Registry::add_component(std::string kind, ComponentSpec spec, ComponentFactory factory) {
+  const std::string key = kind + "/" + spec.name();
+  if (auto it = components_.find(key); it != components_.end())
+    throw Error("component '" + key + "' is registered twice: by " + origin(it->second.plugin) +
+                " and by " + origin(current_plugin_));
+  components_.emplace(key, ComponentType{std::move(kind), std::move(spec), std::move(factory), current_plugin_});
+}
+
+void Registry::add_message(MessageInfo info) {
+  const std::string name = info.name;
+  messages_.try_emplace(name, MessageTypeEntry{std::move(info), current_plugin_});
+}
+
+const NodeType* Registry::find_node(std::string_view type) const {
+  auto it = nodes_.find(type);
+  return it == nodes_.end() ? nullptr : &it->second;
+}
+
+const ComponentType* Registry::find_component(std::string_view kind, std::string_view name) const {
+  std::string key(kind);
+  key += "/";
+  key += name;
+  auto it = components_.find(key);
+  return it == components_.end() ? nullptr : &it->second;
+}
+
+const MessageTypeEntry* Registry::find_message(std::string_view name) const {
+  auto it = messages_.find(name);
+  return it == messages_.end() ? nullptr : &it->second;
+}
+
+std::vector<std::string> Registry::node_type_names() const {
+  std::vector<std::string> names;
+  for (const auto& [name, _] : nodes_) names.push_back(name);
+  return names;
+}
+
+std::vector<std::string> Registry::component_names(std::string_view kind) const {
+  std::vector<std::string> names;
+  for (const auto& [_, c] : components_)
+    if (c.kind == kind) names.push_back(c.spec.name());
+  return names;
+}
+
+}  // namespace kestrel
