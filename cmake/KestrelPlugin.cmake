@@ -1,13 +1,14 @@
 # kestrel_add_plugin(NAME
 #                    SOURCES file.cpp...
 #                    [DESCRIPTION "one line"] [VERSION x.y.z]
-#                    [LIBRARIES target...])
+#                    [LIBRARIES target...]
+#                    [OUTPUT_DIRECTORY dir] [NO_INSTALL])
 #
 # Builds a kestrel plugin: a MODULE library named kestrel_NAME.so that exports the generated
 # C entry point with the ABI handshake. The sources only use KESTREL_REGISTER_NODE (and
 # friends); the entry point is written here, once per plugin.
 function(kestrel_add_plugin name)
-  cmake_parse_arguments(ARG "" "DESCRIPTION;VERSION" "SOURCES;LIBRARIES" ${ARGN})
+  cmake_parse_arguments(ARG "NO_INSTALL" "DESCRIPTION;VERSION;OUTPUT_DIRECTORY" "SOURCES;LIBRARIES" ${ARGN})
   if(NOT ARG_SOURCES)
     message(FATAL_ERROR "kestrel_add_plugin(${name}): no SOURCES")
   endif()
@@ -26,10 +27,12 @@ function(kestrel_add_plugin name)
   endif()
   # Only the entry point is exported; everything else stays private to the plugin.
   set_target_properties(${target} PROPERTIES PREFIX "" CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)
-  if(DEFINED KESTREL_PLUGIN_OUTPUT_DIRECTORY)
+  if(ARG_OUTPUT_DIRECTORY)
+    set_target_properties(${target} PROPERTIES LIBRARY_OUTPUT_DIRECTORY "${ARG_OUTPUT_DIRECTORY}")
+  elseif(DEFINED KESTREL_PLUGIN_OUTPUT_DIRECTORY)
     set_target_properties(${target} PROPERTIES LIBRARY_OUTPUT_DIRECTORY "${KESTREL_PLUGIN_OUTPUT_DIRECTORY}")
   endif()
-  if(KESTREL_IN_TREE)
+  if(KESTREL_IN_TREE AND NOT ARG_NO_INSTALL)
     install(TARGETS ${target} LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}/kestrel/plugins")
   endif()
 endfunction()

@@ -117,6 +117,9 @@ class Builder {
   std::map<std::string, int> node_index_;
   std::map<std::string, std::map<std::string, Override>> overrides_;  // node id -> param -> value
   std::vector<bool> node_ok_;  // type known (ports can be checked)
+  // Inputs named by a connection that failed for another reason: not also "not connected".
+  std::set<std::pair<int, int>> attempted_inputs_;
+  std::set<int> nodes_with_broken_inputs_;
 };
 
 bool Builder::check_keys(const YAML::Node& map, const std::vector<std::string>& allowed, const std::string& what) {
@@ -156,7 +159,7 @@ void Builder::read_executor(const YAML::Node& n) {
   YAML::Node type = n;
   if (n.IsMap()) {
     check_keys(n, {"type", "default_policy"}, "executor");
-    type = n["type"];
+    type.reset(n["type"]);
     if (!type) {
       error(n, "executor needs a 'type' (lockstep or realtime)");
       return;
@@ -185,7 +188,7 @@ void Builder::read_clock(const YAML::Node& n, bool& clock_given) {
   YAML::Node type = n;
   if (n.IsMap()) {
     check_keys(n, {"type", "real_time_factor"}, "clock");
-    type = n["type"];
+    type.reset(n["type"]);
     if (!type) {
       error(n, "clock needs a 'type' (simulated or wall)");
       return;
@@ -357,13 +360,13 @@ std::optional<ParamValue> Builder::check_value(const YAML::Node& value, const So
       YAML::Node type_node = value;
       YAML::Node component_params;
       if (value.IsMap()) {
-        type_node = value["type"];
+        type_node.reset(value["type"]);
         if (!type_node) {
           diag_.error(where, fmt::format("{}: parameter '{}' needs a 'type' naming the {}", owner, spec.name,
                                          spec.component_kind));
           return std::nullopt;
         }
-        component_params = YAML::Clone(value);
+        component_params.reset(YAML::Clone(value));
         component_params.remove("type");
       }
       if (!type_node.IsScalar()) return wrong_type("a " + spec.component_kind + " name or a map with 'type'");
@@ -539,6 +542,7 @@ std::optional<Builder::Endpoint> Builder::endpoint(const YAML::Node& n, bool out
     const auto& ports = output ? spec.outputs() : spec.inputs();
     std::vector<std::string> names;
     for (const auto& p : ports) names.push_back(p.name);
+    if (!output) nodes_with_broken_inputs_.insert(it->second);
     std::string hint;
     if ((output ? spec.input_index(port) : spec.output_index(port)) >= 0)
       hint = fmt::format("; '{}' is an {}, and connections go from an output to an input", *text,
@@ -588,6 +592,7 @@ void Builder::read_connections() {
     }
     auto source = endpoint(from, true);
     auto target = endpoint(to, false);
+    if (target) attempted_inputs_.insert({target->node, target->port});
     if (!source || !target || !ok) continue;
     const auto& out_port = g_.nodes[static_cast<std::size_t>(source->node)].type->spec.outputs()[static_cast<std::size_t>(source->port)];
     const auto& in_port = g_.nodes[static_cast<std::size_t>(target->node)].type->spec.inputs()[static_cast<std::size_t>(target->port)];
@@ -616,10 +621,11 @@ void Builder::check_inputs_connected() {
   std::set<std::pair<int, int>> connected;
   for (const auto& c : g_.connections) connected.insert({c.to_node, c.to_port});
   for (std::size_t i = 0; i < g_.nodes.size(); ++i) {
-    if (!node_ok_[i]) continue;
+    if (!node_ok_[i] || nodes_with_broken_inputs_.count(static_cast<int>(i))) continue;
     const auto& inputs = g_.nodes[i].type->spec.inputs();
     for (std::size_t p = 0; p < inputs.size(); ++p) {
-      if (inputs[p].optional || connected.count({static_cast<int>(i), static_cast<int>(p)})) continue;
+      const std::pair<int, int> key{static_cast<int>(i), static_cast<int>(p)};
+      if (inputs[p].optional || connected.count(key) || attempted_inputs_.count(key)) continue;
       diag_.error(g_.nodes[i].where, fmt::format("input '{}.{}' ({}) is not connected", g_.nodes[i].id, inputs[p].name,
                                                  inputs[p].type));
     }
@@ -703,7 +709,15 @@ BuildResult Builder::build(const std::vector<std::string>& overrides) {
 
 BuildResult build_graph(const GraphSource& source, const Registry& registry, const std::vector<std::string>& overrides) {
   Builder builder(source.impl(), registry);
-  BuildResult result = builder.build(overrides);
+  BuildResult result;
+  try {
+    result = builder.build(overrides);
+  } catch (const YAML::Exception& e) {
+    // The checks above guard every access; this is a last line so that a malformed file can never
+    // crash the CLI.
+    result = BuildResult{};
+    result.diagnostics.error(source.impl().at(e.mark), "malformed graph: " + e.msg);
+  }
   if (result.graph) result.graph->plugin_paths = source.plugin_paths();
   return result;
 }

@@ -62,15 +62,11 @@ Time LockstepExecutor::run(Progress& progress) {
   const bool paced = graph.clock == ClockKind::wall;
   const auto wall_start = std::chrono::steady_clock::now();
 
-  std::vector<Time> next_tick(run_.nodes.size(), Time::max());
-  for (auto* node : run_.order)
-    if (node->period > Duration::zero()) next_tick[static_cast<std::size_t>(node->index)] = Time{0};
-
   bool first_step = true;
   while (!run_.stopping()) {
     Time step = Time::max();
     for (auto* node : run_.order)
-      if (!node->source_ended) step = std::min(step, next_tick[static_cast<std::size_t>(node->index)]);
+      if (node->has_timer() && !node->source_ended) step = std::min(step, node->tick_time(node->ticks));
     if (step == Time::max()) {
       if (delayed_.empty()) break;  // every source has ended and nothing is in flight
       step = now_;                  // flush the feedback still in flight
@@ -90,10 +86,9 @@ Time LockstepExecutor::run(Progress& progress) {
     for (auto& [edge, envelope] : arriving) enqueue(*edge, envelope);
 
     for (NodeRuntime* node : run_.order) {
-      Time& due = next_tick[static_cast<std::size_t>(node->index)];
-      if (!node->source_ended && due == now_) {
+      if (node->has_timer() && !node->source_ended && node->tick_time(node->ticks) == now_) {
         node->call(NodeRuntime::Call::tick);
-        due += node->period;
+        ++node->ticks;
       }
       drain_inputs(*node);
       if (run_.failed) break;

@@ -1,4 +1,5 @@
 #include <chrono>
+#include <cmath>
 
 #include "run_state.hpp"
 
@@ -10,9 +11,14 @@ void Node::process(Context&) {
 void Node::tick(Context&) {}
 void Node::finish(Context&) {}
 
+void NodeInit::set_rate(double hz) {
+  if (!(hz > 0.0) || !std::isfinite(hz)) throw Error("node '" + id_ + "': a timer rate must be positive");
+  tick_interval_ns_ = 1e9 / hz;
+}
+
 void NodeInit::set_period(Duration period) {
   if (period <= Duration::zero()) throw Error("node '" + id_ + "': a timer period must be positive");
-  period_ = period;
+  tick_interval_ns_ = static_cast<double>(period.count());
 }
 
 std::shared_ptr<void> NodeInit::make_component_erased(const std::string& param_name,
@@ -152,7 +158,7 @@ bool RunState::instantiate() {
                   node_seed(seed, rt->id()), *rt->logger);
     try {
       rt->node = rt->config->type->factory(init);
-      rt->period = init.period();
+      rt->tick_interval_ns = init.tick_interval_ns();
     } catch (const std::exception& e) {
       ok = false;
       node_error(*rt, std::string("could not start: ") + e.what());

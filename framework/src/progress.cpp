@@ -14,7 +14,7 @@ Progress::Progress(const RunState& run, bool requested)
 std::uint64_t Progress::source_frames() const {
   std::uint64_t frames = 0;
   for (const auto& node : run_.nodes)
-    if (node->period > Duration::zero()) frames = std::max(frames, node->calls.load(std::memory_order_relaxed));
+    if (node->has_timer()) frames = std::max(frames, node->calls.load(std::memory_order_relaxed));
   return frames;
 }
 

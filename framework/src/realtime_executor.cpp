@@ -71,9 +71,8 @@ void RealtimeExecutor::deliver(Edge& edge, const Envelope& envelope) {
 }
 
 void RealtimeExecutor::node_loop(NodeRuntime& node) {
-  const bool has_timer = node.period > Duration::zero();
+  const bool has_timer = node.has_timer();
   const bool has_triggers = node.has_triggering_input();
-  auto next_tick = start_;
   std::unique_lock lock(node.mutex);
   while (!aborting_ && !run_.failed) {
     if (const int next = oldest_waiting_input(node); next >= 0) {
@@ -96,6 +95,7 @@ void RealtimeExecutor::node_loop(NodeRuntime& node) {
       node.wake.wait(lock);
       continue;
     }
+    const auto next_tick = start_ + node.tick_time(node.ticks);
     if (std::chrono::steady_clock::now() < next_tick) {
       node.wake.wait_until(lock, next_tick);
       continue;
@@ -104,13 +104,12 @@ void RealtimeExecutor::node_loop(NodeRuntime& node) {
     lock.unlock();
     node.call(NodeRuntime::Call::tick);
     lock.lock();
-    next_tick += node.period;
+    ++node.ticks;
     // A node that runs late skips the ticks it missed instead of bursting to catch up.
-    const auto now = std::chrono::steady_clock::now();
-    if (next_tick < now) {
-      const auto missed = (now - next_tick) / node.period + 1;
-      node.skipped_ticks += static_cast<std::uint64_t>(missed);
-      next_tick += missed * node.period;
+    const auto late = std::chrono::steady_clock::now() - start_;
+    while (node.tick_time(node.ticks) < late) {
+      ++node.ticks;
+      ++node.skipped_ticks;
     }
   }
   node.exited = true;
@@ -135,7 +134,7 @@ void RealtimeExecutor::node_loop(NodeRuntime& node) {
 
 bool RealtimeExecutor::all_sources_ended() const {
   for (const auto& node : run_.nodes)
-    if (node->period > Duration::zero() && !node->source_ended) return false;
+    if (node->has_timer() && !node->source_ended) return false;
   return true;
 }
 

@@ -3,6 +3,7 @@
 // input slots, output edges and statistics; an Edge is one connection with its queue; RunState
 // holds what all nodes share. The executors decide when nodes are called and how edges deliver.
 #include <atomic>
+#include <cmath>
 #include <condition_variable>
 #include <deque>
 #include <memory>
@@ -61,7 +62,8 @@ class NodeRuntime {
   std::unique_ptr<Node> node;
   std::unique_ptr<Logger> logger;
   std::mt19937_64 rng;
-  Duration period{0};
+  double tick_interval_ns = 0.0;  // 0: no timer
+  std::uint64_t ticks = 0;        // ticks done; the next one is due at tick_time(ticks)
   std::atomic<bool> source_ended{false};  // set by the node thread, read by the run loop
   std::vector<InputSlot> inputs;
   std::vector<std::vector<Edge*>> outputs;
@@ -86,6 +88,10 @@ class NodeRuntime {
   const std::string& id() const { return config->id; }
   const std::string& type() const { return config->type->spec.type(); }
   bool has_triggering_input() const;
+  bool has_timer() const { return tick_interval_ns > 0.0; }
+  Time tick_time(std::uint64_t k) const {
+    return Time(static_cast<std::int64_t>(std::llround(static_cast<double>(k) * tick_interval_ns)));
+  }
 
   /// Calls the node, timing process() and tick(), and turning exceptions into run errors.
   /// Returns false if the node threw.

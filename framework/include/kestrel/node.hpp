@@ -49,7 +49,7 @@ class Node {
 
   /// Called once per message on a triggering input (see InputOptions::trigger).
   virtual void process(class Context& ctx);
-  /// Called every period set with NodeInit::set_period, starting at time zero.
+  /// Called at the rate set with NodeInit::set_rate (or set_period), starting at time zero.
   virtual void tick(class Context& ctx);
   /// Called once at the end of the run, after every input has drained: flush files, add to the
   /// report. Still called after a node error stopped the run.
@@ -79,9 +79,13 @@ class NodeInit {
     return std::static_pointer_cast<Interface>(make_component_erased(param_name, Interface::kKind));
   }
 
-  /// Asks for tick() every `period`, from time zero. Sources use this.
+  /// Asks for tick() `hz` times a second, from time zero. Sources use this. Tick k falls at
+  /// round(k / hz) on the run clock, so 30 Hz gives exactly 600 ticks in 20 s.
+  void set_rate(double hz);
+  /// Asks for tick() every `period`, from time zero.
   void set_period(Duration period);
-  Duration period() const { return period_; }
+  /// Nanoseconds between ticks; 0 if the node has no timer.
+  double tick_interval_ns() const { return tick_interval_ns_; }
 
   /// A seed derived from the run's seed and this node's id: stable across runs and distinct
   /// between nodes.
@@ -98,7 +102,7 @@ class NodeInit {
   const Registry& registry_;
   std::uint64_t seed_;
   Logger& log_;
-  Duration period_{0};
+  double tick_interval_ns_ = 0.0;
 };
 
 /// A node's view of the run while it processes a message or a tick.

@@ -1,0 +1,69 @@
+// Sinks that record what reached them into the run report.
+#include <kestrel/plugin.hpp>
+
+#include <cstring>
+
+#include "test_messages.hpp"
+
+namespace kestrel::test {
+
+class Collector final : public Node {
+ public:
+  static constexpr Input<Number> kIn{"in"};
+  static NodeSpec spec() {
+    return NodeSpec("collector", "Records every number it receives into the report, under its node id")
+        .input(kIn, "numbers")
+        .param(param("keep", 100000).at_least(0).describe("values kept in the report (the count is always exact)"));
+  }
+  explicit Collector(NodeInit& init) : keep_(static_cast<std::size_t>(init.param<std::int64_t>("keep"))) {}
+  void process(Context& ctx) override {
+    const auto n = ctx.get(kIn);
+    ++count_;
+    // Bit-exact fingerprint of everything received, in order.
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &n->value, sizeof bits);
+    checksum_ = (checksum_ ^ bits ^ static_cast<std::uint64_t>(n->index)) * 1099511628211ull;
+    if (values_.size() < keep_) {
+      values_.push_back(n->value);
+      indices_.push_back(n->index);
+      stamps_.push_back(to_seconds(ctx.now()));
+    }
+  }
+  void finish(Context& ctx) override {
+    ctx.set_report_section(ctx.id(), {{"count", count_},
+                                      {"checksum", checksum_},
+                                      {"values", values_},
+                                      {"indices", indices_},
+                                      {"times_s", stamps_}});
+  }
+
+ private:
+  std::size_t keep_;
+  std::uint64_t count_ = 0;
+  std::uint64_t checksum_ = 1469598103934665603ull;
+  std::vector<double> values_;
+  std::vector<std::int64_t> indices_;
+  std::vector<double> stamps_;
+};
+KESTREL_REGISTER_NODE(Collector)
+
+class BlobSink final : public Node {
+ public:
+  static constexpr Input<Blob> kIn{"in"};
+  static NodeSpec spec() {
+    return NodeSpec("blob_sink", "Counts blobs and checks they were never copied").input(kIn, "blobs");
+  }
+  explicit BlobSink(NodeInit&) {}
+  void process(Context& ctx) override {
+    ++count_;
+    last_ = ctx.get(kIn).get();
+  }
+  void finish(Context& ctx) override { ctx.set_report_section(ctx.id(), {{"count", count_}}); }
+  const Blob* last_ = nullptr;
+
+ private:
+  std::uint64_t count_ = 0;
+};
+KESTREL_REGISTER_NODE(BlobSink)
+
+}  // namespace kestrel::test
