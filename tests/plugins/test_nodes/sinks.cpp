@@ -1,7 +1,9 @@
 // Sinks that record what reached them into the run report.
 #include <kestrel/plugin.hpp>
 
+#include <chrono>
 #include <cstring>
+#include <kestrel/runtime/histogram.hpp>
 
 #include "test_messages.hpp"
 
@@ -51,18 +53,26 @@ class BlobSink final : public Node {
  public:
   static constexpr Input<Blob> kIn{"in"};
   static NodeSpec spec() {
-    return NodeSpec("blob_sink", "Counts blobs and checks they were never copied").input(kIn, "blobs");
+    return NodeSpec("blob_sink", "Counts blobs, checks they were never copied and times their journey")
+        .input(kIn, "blobs");
   }
   explicit BlobSink(NodeInit&) {}
   void process(Context& ctx) override {
+    const auto blob = ctx.get(kIn);
     ++count_;
-    last_ = ctx.get(kIn).get();
+    if (blob->bytes.data() != blob->origin) bytes_copied_ += blob->bytes.size();
+    latency_.record(std::chrono::steady_clock::now().time_since_epoch().count() - blob->created_ns);
   }
-  void finish(Context& ctx) override { ctx.set_report_section(ctx.id(), {{"count", count_}}); }
-  const Blob* last_ = nullptr;
+  void finish(Context& ctx) override {
+    ctx.set_report_section(ctx.id(), {{"count", count_},
+                                      {"bytes_copied", bytes_copied_},
+                                      {"latency_ns", {{"p50", latency_.quantile(0.5)}, {"p99", latency_.quantile(0.99)}}}});
+  }
 
  private:
   std::uint64_t count_ = 0;
+  std::uint64_t bytes_copied_ = 0;
+  DurationHistogram latency_;
 };
 KESTREL_REGISTER_NODE(BlobSink)
 

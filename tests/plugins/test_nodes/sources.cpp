@@ -1,6 +1,8 @@
 // Timer-driven sources of numbers and blobs.
 #include <kestrel/plugin.hpp>
 
+#include <chrono>
+
 #include "test_messages.hpp"
 
 namespace kestrel::test {
@@ -45,21 +47,33 @@ class BlobSource final : public Node {
         .output(kOut, "the blobs")
         .param(param("rate_hz", 10.0).with_unit("Hz").range(0.001, 1e6).describe("publication rate"))
         .param(param("size_bytes", 1024).range(0, 1 << 30).with_unit("B").describe("size of each blob"))
-        .param(param("count", 0).at_least(0).describe("blobs to publish; 0 = until the run ends"));
+        .param(param("count", 0).at_least(0).describe("blobs to publish; 0 = until the run ends"))
+        .param(param("reuse", false).describe("publish one shared blob again and again instead of a new one"));
   }
   explicit BlobSource(NodeInit& init)
       : size_(static_cast<std::size_t>(init.param<std::int64_t>("size_bytes"))), count_(init.param<std::int64_t>("count")) {
     init.set_rate(init.param<double>("rate_hz"));
+    if (init.param<bool>("reuse")) shared_ = make();
   }
   void tick(Context& ctx) override {
-    ctx.publish(kOut, Blob{std::vector<std::uint8_t>(size_, static_cast<std::uint8_t>(sent_))});
+    ctx.publish(kOut, shared_ ? shared_ : make());
     if (++sent_ == count_) ctx.end_of_stream();
+  }
+
+ private:
+  std::shared_ptr<const Blob> make() const {
+    auto blob = std::make_shared<Blob>();
+    blob->bytes.assign(size_, static_cast<std::uint8_t>(sent_));
+    blob->origin = blob->bytes.data();
+    blob->created_ns = std::chrono::steady_clock::now().time_since_epoch().count();
+    return blob;
   }
 
  private:
   std::size_t size_;
   std::int64_t count_;
   std::int64_t sent_ = 0;
+  std::shared_ptr<const Blob> shared_;
 };
 KESTREL_REGISTER_NODE(BlobSource)
 

@@ -12,8 +12,12 @@ struct Number {
   double value = 0.0;
 };
 
+/// A block of bytes that remembers where its buffer was made and when, so a sink can prove it
+/// was never copied and measure how long it took to arrive.
 struct Blob {
   std::vector<std::uint8_t> bytes;
+  const void* origin = nullptr;  ///< bytes.data() at the source
+  std::int64_t created_ns = 0;   ///< steady clock at publication
 };
 
 }  // namespace kestrel::test
