@@ -36,3 +36,19 @@ function(kestrel_add_plugin name)
     install(TARGETS ${target} LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}/kestrel/plugins")
   endif()
 endfunction()
+
+# kestrel_add_plugin_library(NAME SOURCES file.cpp... [LIBRARIES target...])
+#
+# The algorithms of a plugin as a static library, so that unit tests call them directly and the
+# plugin links them in. Built position-independent with hidden visibility, like the plugin.
+function(kestrel_add_plugin_library name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;LIBRARIES" ${ARGN})
+  add_library(${name} STATIC ${ARG_SOURCES})
+  set_target_properties(${name} PROPERTIES POSITION_INDEPENDENT_CODE ON CXX_VISIBILITY_PRESET hidden
+                                           VISIBILITY_INLINES_HIDDEN ON)
+  target_include_directories(${name} PUBLIC "${CMAKE_CURRENT_SOURCE_DIR}")
+  target_link_libraries(${name} PUBLIC kestrel::kestrel ${ARG_LIBRARIES})
+  if(TARGET kestrel_warnings)
+    target_link_libraries(${name} PRIVATE kestrel_warnings)
+  endif()
+endfunction()

@@ -31,6 +31,7 @@ std::string describe_param(const ParamSpec& p) {
   if (p.min || p.max)
     line += fmt::format("  range [{}, {}]", p.min ? fmt::format("{}", *p.min) : "-inf",
                         p.max ? fmt::format("{}", *p.max) : "inf");
+  if (p.length) line += fmt::format("  {} values", *p.length);
   if (!p.allowed.empty()) line += fmt::format("  one of {{{}}}", fmt::join(p.allowed, ", "));
   line += "\n      " + p.description + "\n";
   return line;

@@ -353,6 +353,11 @@ std::optional<ParamValue> Builder::check_value(const YAML::Node& value, const So
         }
         list.push_back(d);
       }
+      if (ok && spec.length && list.size() != *spec.length) {
+        diag_.error(where, fmt::format("{}: parameter '{}' must hold exactly {} numbers, not {}", owner, spec.name,
+                                       *spec.length, list.size()));
+        ok = false;
+      }
       if (!ok) return std::nullopt;
       return ParamValue(std::move(list));
     }

@@ -40,6 +40,7 @@ struct ParamSpec {
   std::optional<double> max;
   std::vector<std::string> allowed;  ///< for strings: the only accepted values
   std::string component_kind;        ///< for components: e.g. "associator"
+  std::optional<std::size_t> length;  ///< for lists: the exact number of elements
   std::string description;
 
   ParamSpec& with_unit(std::string u) {
@@ -53,6 +54,11 @@ struct ParamSpec {
   }
   ParamSpec& at_least(double lo) {
     min = lo;
+    return *this;
+  }
+  /// A list of exactly n numbers (e.g. 3 for a position).
+  ParamSpec& with_length(std::size_t n) {
+    length = n;
     return *this;
   }
   ParamSpec& one_of(std::vector<std::string> values) {

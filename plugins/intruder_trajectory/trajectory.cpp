@@ -1,0 +1,120 @@
+#include "trajectory.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "kestrel/error.hpp"
+
+namespace kestrel::intruder {
+
+FigureEight::FigureEight(const geometry::CameraPose& camera, double distance, double half_width, double half_height,
+                         double period)
+    : camera_(camera), distance_(distance), half_width_(half_width), half_height_(half_height),
+      omega_(2.0 * M_PI / period) {}
+
+State FigureEight::at(double t) const {
+  const double w = omega_;
+  const Eigen::Vector3d p_cam(half_width_ * std::sin(w * t), half_height_ * std::sin(2 * w * t), distance_);
+  const Eigen::Vector3d v_cam(half_width_ * w * std::cos(w * t), 2 * w * half_height_ * std::cos(2 * w * t), 0.0);
+  return State{camera_.to_world(p_cam), camera_.world_from_camera() * v_cam};
+}
+
+StraightLine::StraightLine(const Eigen::Vector3d& start, const Eigen::Vector3d& end, double speed, bool bounce)
+    : start_(start), length_((end - start).norm()), speed_(speed), bounce_(bounce) {
+  direction_ = length_ > 0 ? Eigen::Vector3d((end - start) / length_) : Eigen::Vector3d::Zero();
+}
+
+State StraightLine::at(double t) const {
+  if (length_ <= 0 || speed_ <= 0) return State{start_, Eigen::Vector3d::Zero()};
+  double s = speed_ * std::max(t, 0.0);
+  double sign = 1.0;
+  if (bounce_) {
+    const double lap = std::fmod(s, 2.0 * length_);
+    if (lap > length_) {
+      s = 2.0 * length_ - lap;
+      sign = -1.0;
+    } else {
+      s = lap;
+    }
+  } else if (s >= length_) {
+    return State{start_ + direction_ * length_, Eigen::Vector3d::Zero()};
+  }
+  return State{start_ + direction_ * s, direction_ * speed_ * sign};
+}
+
+RandomManoeuvre::RandomManoeuvre(const Eigen::Vector3d& centre, const Eigen::Vector3d& half_extent, double max_speed,
+                                 std::uint64_t seed)
+    : centre_(centre) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> frequency(0.03, 0.25);  // Hz: manoeuvres of 4 to 30 s
+  std::uniform_real_distribution<double> phase(0.0, 2.0 * M_PI);
+  std::uniform_real_distribution<double> weight(0.3, 1.0);
+  constexpr int kWaves = 3;
+  for (int axis = 0; axis < 3; ++axis) {
+    double weights = 0.0;
+    for (int k = 0; k < kWaves; ++k) {
+      waves_[axis].push_back({weight(rng), 2.0 * M_PI * frequency(rng), phase(rng)});
+      weights += waves_[axis].back().amplitude;
+    }
+    // Scale so the sum can never leave the box, then so the speed bound |v| <= sum(a w) holds.
+    double speed_bound = 0.0;
+    for (auto& w : waves_[axis]) {
+      w.amplitude *= half_extent[axis] / weights;
+      speed_bound += w.amplitude * w.omega;
+    }
+    const double limit = max_speed / std::sqrt(3.0);
+    if (speed_bound > limit)
+      for (auto& w : waves_[axis]) w.amplitude *= limit / speed_bound;
+  }
+}
+
+State RandomManoeuvre::at(double t) const {
+  State s{centre_, Eigen::Vector3d::Zero()};
+  for (int axis = 0; axis < 3; ++axis) {
+    for (const auto& w : waves_[axis]) {
+      s.position[axis] += w.amplitude * std::sin(w.omega * t + w.phase);
+      s.velocity[axis] += w.amplitude * w.omega * std::cos(w.omega * t + w.phase);
+    }
+  }
+  return s;
+}
+
+RecordedFlight::RecordedFlight(const std::filesystem::path& csv, bool loop) : loop_(loop) {
+  std::ifstream in(csv);
+  if (!in) throw Error("cannot open trajectory file " + csv.string());
+  std::string line;
+  int number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    if (line.empty() || line[0] == '#') continue;
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream fields(line);
+    double t, x, y, z;
+    if (!(fields >> t >> x >> y >> z)) {
+      if (times_.empty() && number == 1) continue;  // the header
+      throw Error(SourceLocation{csv.string(), number, 0}, "expected four numbers: t,x,y,z");
+    }
+    if (!times_.empty() && t <= times_.back())
+      throw Error(SourceLocation{csv.string(), number, 0}, "times must increase");
+    times_.push_back(t);
+    points_.emplace_back(x, y, z);
+  }
+  if (times_.size() < 2) throw Error("trajectory file " + csv.string() + " needs at least two rows of t,x,y,z");
+}
+
+State RecordedFlight::at(double t) const {
+  const double t0 = times_.front();
+  double local = t + t0;  // the file's clock starts at its first row
+  if (loop_) local = t0 + std::fmod(std::max(t, 0.0), duration());
+  if (local <= times_.front()) return State{points_.front(), Eigen::Vector3d::Zero()};
+  if (local >= times_.back()) return State{points_.back(), Eigen::Vector3d::Zero()};
+  const auto hi = static_cast<std::size_t>(std::upper_bound(times_.begin(), times_.end(), local) - times_.begin());
+  const std::size_t lo = hi - 1;
+  const double span = times_[hi] - times_[lo];
+  const double f = (local - times_[lo]) / span;
+  return State{points_[lo] + f * (points_[hi] - points_[lo]), (points_[hi] - points_[lo]) / span};
+}
+
+}  // namespace kestrel::intruder

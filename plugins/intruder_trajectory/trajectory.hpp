@@ -1,0 +1,81 @@
+#pragma once
+// Intruder trajectories: the paths a simulated intruder flies, as position and velocity at any
+// time. Pure functions of time (and of a seed for the random one), so runs reproduce.
+#include <Eigen/Core>
+#include <filesystem>
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "kestrel/geometry/frames.hpp"
+
+namespace kestrel::intruder {
+
+struct State {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  ///< world, m
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  ///< world, m/s
+};
+
+class Trajectory {
+ public:
+  virtual ~Trajectory() = default;
+  virtual State at(double t) const = 0;
+};
+
+/// The paper's figure-8 (a 1:2 Lissajous curve) in the plane normal to a camera's optical axis,
+/// `distance` metres in front of it: x_c = half_width sin(wt), y_c = half_height sin(2wt).
+class FigureEight final : public Trajectory {
+ public:
+  FigureEight(const geometry::CameraPose& camera, double distance, double half_width, double half_height,
+              double period);
+  State at(double t) const override;
+
+ private:
+  geometry::CameraPose camera_;
+  double distance_, half_width_, half_height_, omega_;
+};
+
+/// A straight line from `start` to `end` at constant speed; then it holds, or flies back and forth.
+class StraightLine final : public Trajectory {
+ public:
+  StraightLine(const Eigen::Vector3d& start, const Eigen::Vector3d& end, double speed, bool bounce);
+  State at(double t) const override;
+
+ private:
+  Eigen::Vector3d start_, direction_;
+  double length_, speed_;
+  bool bounce_;
+};
+
+/// Smooth random manoeuvres around a centre: on each axis a sum of sinusoids with random
+/// frequencies and phases, scaled to stay inside a box and under a speed limit.
+class RandomManoeuvre final : public Trajectory {
+ public:
+  RandomManoeuvre(const Eigen::Vector3d& centre, const Eigen::Vector3d& half_extent, double max_speed,
+                  std::uint64_t seed);
+  State at(double t) const override;
+
+ private:
+  struct Wave {
+    double amplitude, omega, phase;
+  };
+  Eigen::Vector3d centre_;
+  std::vector<Wave> waves_[3];
+};
+
+/// Playback of a recorded flight: CSV with a header and rows t,x,y,z (seconds, world metres),
+/// interpolated linearly; holds the last point, or loops.
+class RecordedFlight final : public Trajectory {
+ public:
+  /// Throws kestrel::Error naming the file and line of the first problem.
+  RecordedFlight(const std::filesystem::path& csv, bool loop);
+  State at(double t) const override;
+  double duration() const { return times_.back() - times_.front(); }
+
+ private:
+  std::vector<double> times_;
+  std::vector<Eigen::Vector3d> points_;
+  bool loop_;
+};
+
+}  // namespace kestrel::intruder

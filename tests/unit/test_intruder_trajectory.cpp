@@ -1,0 +1,134 @@
+// Intruder trajectories against hand-computed positions, and the intruder node in a graph.
+#include <gmock/gmock.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "kestrel/runtime/graph.hpp"
+#include "kestrel/runtime/plugin_host.hpp"
+#include "kestrel/runtime/run.hpp"
+#include "trajectory.hpp"
+
+using namespace kestrel;
+using namespace kestrel::intruder;
+
+namespace {
+
+void expect_near(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double tol = 1e-9) {
+  EXPECT_NEAR((a - b).norm(), 0.0, tol) << "got " << a.transpose() << ", expected " << b.transpose();
+}
+
+// Central differences of position must match the reported velocity.
+void expect_consistent_velocity(const Trajectory& traj, double t) {
+  const double h = 1e-5;
+  const Eigen::Vector3d numeric = (traj.at(t + h).position - traj.at(t - h).position) / (2 * h);
+  expect_near(traj.at(t).velocity, numeric, 1e-5);
+}
+
+std::filesystem::path write_csv(const std::string& name, const std::string& text) {
+  const auto file = std::filesystem::temp_directory_path() / name;
+  std::ofstream(file) << text;
+  return file;
+}
+
+}  // namespace
+
+TEST(FigureEight, LiesInThePlaneNormalToTheOpticalAxis) {
+  const auto camera = geometry::level_camera({0, 0, 2}, 0.0);  // looking along world +x
+  const FigureEight f(camera, 5.0, 1.0, 0.5, 12.0);
+  expect_near(f.at(0.0).position, {5, 0, 2});                                   // centre
+  expect_near(f.at(3.0).position, {5, -1, 2});                                  // quarter: 1 m right
+  expect_near(f.at(1.5).position, {5, -std::sqrt(0.5), 1.5});                   // 0.5 m down
+  expect_near(f.at(4.5).position, {5, -std::sqrt(0.5), 2.5});                   // 0.5 m up
+  expect_near(f.at(12.0).position, f.at(0.0).position);                         // periodic
+  for (double t : {0.0, 1.0, 2.7, 8.1}) {
+    EXPECT_NEAR(camera.to_camera(f.at(t).position).z(), 5.0, 1e-12);
+    expect_consistent_velocity(f, t);
+  }
+  const auto turned = geometry::level_camera({0, 0, 2}, M_PI / 2);  // looking along world +y
+  expect_near(FigureEight(turned, 2.5, 1.0, 0.5, 12.0).at(0.0).position, {0, 2.5, 2});
+}
+
+TEST(StraightLine, HoldsOrBouncesAtTheEnd) {
+  const StraightLine hold({0, 0, 0}, {4, 0, 0}, 2.0, false);
+  expect_near(hold.at(1.0).position, {2, 0, 0});
+  expect_near(hold.at(1.0).velocity, {2, 0, 0});
+  expect_near(hold.at(3.0).position, {4, 0, 0});
+  expect_near(hold.at(3.0).velocity, {0, 0, 0});
+  const StraightLine bounce({0, 0, 0}, {4, 0, 0}, 2.0, true);
+  expect_near(bounce.at(3.0).position, {2, 0, 0});
+  expect_near(bounce.at(3.0).velocity, {-2, 0, 0});
+  expect_near(bounce.at(5.0).position, {2, 0, 0});
+  expect_near(bounce.at(5.0).velocity, {2, 0, 0});
+}
+
+TEST(RandomManoeuvre, StaysInItsBoxUnderItsSpeedLimitAndReproduces) {
+  const Eigen::Vector3d centre(5, 0, 2), half(1.0, 1.5, 0.75);
+  const RandomManoeuvre a(centre, half, 3.0, 42), b(centre, half, 3.0, 42), c(centre, half, 3.0, 43);
+  double max_speed = 0;
+  for (double t = 0; t < 600; t += 0.05) {
+    const State s = a.at(t);
+    for (int i = 0; i < 3; ++i) EXPECT_LE(std::abs(s.position[i] - centre[i]), half[i] + 1e-9);
+    max_speed = std::max(max_speed, s.velocity.norm());
+    expect_near(s.position, b.at(t).position, 0.0);
+  }
+  EXPECT_LE(max_speed, 3.0 + 1e-9);
+  EXPECT_GT(max_speed, 0.3);  // it does manoeuvre
+  EXPECT_GT((a.at(10).position - c.at(10).position).norm(), 1e-3);
+  expect_consistent_velocity(a, 17.3);
+}
+
+TEST(RecordedFlight, InterpolatesHoldsAndLoops) {
+  const auto file = write_csv("kestrel-flight.csv", "t,x,y,z\n10,0,0,0\n12,2,0,0\n14,2,4,0\n");
+  const RecordedFlight hold(file, false);
+  expect_near(hold.at(1.0).position, {1, 0, 0});  // run time 1 s = file time 11 s
+  expect_near(hold.at(1.0).velocity, {1, 0, 0});
+  expect_near(hold.at(3.0).position, {2, 2, 0});
+  expect_near(hold.at(10.0).position, {2, 4, 0});
+  const RecordedFlight loop(file, true);
+  expect_near(loop.at(5.0).position, {1, 0, 0});  // 5 s = one 4 s loop + 1 s
+}
+
+TEST(RecordedFlight, BadFilesNameTheFileAndLine) {
+  EXPECT_THAT([] { RecordedFlight("/nonexistent/flight.csv", false); },
+              ::testing::ThrowsMessage<Error>(::testing::HasSubstr("cannot open trajectory file /nonexistent/flight.csv")));
+  const auto bad = write_csv("kestrel-bad.csv", "t,x,y,z\n0,0,0,0\n1,1,oops,0\n");
+  EXPECT_THAT([&] { RecordedFlight(bad, false); },
+              ::testing::ThrowsMessage<Error>(::testing::HasSubstr(bad.string() + ":3: expected four numbers")));
+  const auto backwards = write_csv("kestrel-backwards.csv", "0,0,0,0\n2,1,1,1\n1,1,1,1\n");
+  EXPECT_THAT([&] { RecordedFlight(backwards, false); },
+              ::testing::ThrowsMessage<Error>(::testing::HasSubstr(":3: times must increase")));
+}
+
+TEST(IntruderNode, PublishesTruthAtItsRateAndThePlotIsWritten) {
+  PluginHost host;
+  host.load_search_path();
+  const auto dir = std::filesystem::temp_directory_path() / "kestrel-intruder-plot";
+  std::filesystem::remove_all(dir);
+  const std::string yaml = R"(nodes:
+  - {id: intruder, type: intruder, params: {rate_hz: 30, distance_m: 7.5}}
+  - {id: plot, type: trajectory_plot, params: {output_dir: ")" + dir.string() + R"("}}
+connections:
+  - {from: intruder.truth, to: plot.truth}
+duration: 2.0
+)";
+  auto built = build_graph(GraphSource::from_string(yaml), host.registry());
+  ASSERT_TRUE(built.graph) << built.diagnostics.str();
+  const auto r = run_graph(*built.graph, host.registry());
+  EXPECT_EQ(r.outcome, RunOutcome::completed);
+  EXPECT_EQ(r.nodes[0].messages_out, 60u);
+  EXPECT_TRUE(std::filesystem::exists(dir / "trajectory.png"));
+  std::ifstream csv(dir / "trajectory.csv");
+  int rows = 0;
+  for (std::string line; std::getline(csv, line);) ++rows;
+  EXPECT_EQ(rows, 61);  // header + 60 samples
+
+  // A recorded flight that is missing stops the run before it starts, naming the node.
+  auto missing = build_graph(
+      GraphSource::from_string("nodes:\n  - {id: i, type: intruder, params: {shape: file, file: /no/such.csv}}\n"),
+      host.registry());
+  ASSERT_TRUE(missing.graph);
+  const auto failed = run_graph(*missing.graph, host.registry());
+  EXPECT_EQ(failed.outcome, RunOutcome::failed);
+  EXPECT_THAT(failed.errors.at(0), ::testing::HasSubstr("node 'i' (intruder): could not start: cannot open"));
+}
