@@ -1,0 +1,131 @@
+// The shared assignment solver against brute force, and the lag estimator on known shifts.
+#include <gmock/gmock.h>
+
+#include <algorithm>
+#include <functional>
+#include <numeric>
+#include <random>
+
+#include "kestrel/algorithms/assignment.hpp"
+#include "kestrel/algorithms/lag.hpp"
+
+using namespace kestrel::algorithms;
+
+namespace {
+
+// Enumerates every partial matching; best = most allowed pairs, then least cost.
+std::pair<int, double> brute_force(const Eigen::MatrixXd& cost, double gate) {
+  const int rows = static_cast<int>(cost.rows()), cols = static_cast<int>(cost.cols());
+  std::pair<int, double> best{0, 0.0};
+  std::vector<int> used(static_cast<std::size_t>(cols), 0);
+  std::function<void(int, int, double)> visit = [&](int r, int pairs, double total) {
+    if (r == rows) {
+      if (pairs > best.first || (pairs == best.first && total < best.second - 1e-12)) best = {pairs, total};
+      return;
+    }
+    visit(r + 1, pairs, total);  // leave row r unassigned
+    for (int c = 0; c < cols; ++c) {
+      if (used[static_cast<std::size_t>(c)] || !std::isfinite(cost(r, c)) || cost(r, c) > gate) continue;
+      used[static_cast<std::size_t>(c)] = 1;
+      visit(r + 1, pairs + 1, total + cost(r, c));
+      used[static_cast<std::size_t>(c)] = 0;
+    }
+  };
+  visit(0, 0, 0.0);
+  return best;
+}
+
+void expect_consistent(const Assignment& a, const Eigen::MatrixXd& cost, double gate) {
+  int pairs = 0;
+  double total = 0;
+  for (int r = 0; r < cost.rows(); ++r) {
+    const int c = a.row_to_col[static_cast<std::size_t>(r)];
+    if (c < 0) continue;
+    ++pairs;
+    total += cost(r, c);
+    EXPECT_EQ(a.col_to_row[static_cast<std::size_t>(c)], r);
+    EXPECT_TRUE(std::isfinite(cost(r, c)) && cost(r, c) <= gate) << "a forbidden pair was assigned";
+  }
+  EXPECT_EQ(pairs, a.pairs);
+  EXPECT_NEAR(total, a.total_cost, 1e-9);
+}
+
+}  // namespace
+
+TEST(Assignment, MatchesBruteForceOnRandomRectangularMatrices) {
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<int> size(1, 6);
+  std::uniform_real_distribution<double> value(0.0, 3.0);
+  std::bernoulli_distribution forbid(0.2);
+  for (int trial = 0; trial < 500; ++trial) {
+    Eigen::MatrixXd cost(size(rng), size(rng));
+    for (int r = 0; r < cost.rows(); ++r)
+      for (int c = 0; c < cost.cols(); ++c) cost(r, c) = forbid(rng) ? kForbidden : value(rng);
+    const double gate = trial % 2 ? 2.0 : std::numeric_limits<double>::infinity();
+    const auto a = solve_assignment(cost, gate);
+    const auto expected = brute_force(cost, gate);
+    expect_consistent(a, cost, gate);
+    EXPECT_EQ(a.pairs, expected.first) << cost;
+    EXPECT_NEAR(a.total_cost, expected.second, 1e-9) << cost;
+  }
+}
+
+TEST(Assignment, KnownCases) {
+  Eigen::MatrixXd cost(3, 3);
+  cost << 4, 1, 3,  //
+      2, 0, 5,      //
+      3, 2, 2;
+  auto a = solve_assignment(cost);
+  EXPECT_THAT(a.row_to_col, ::testing::ElementsAre(1, 0, 2));
+  EXPECT_DOUBLE_EQ(a.total_cost, 5.0);
+
+  // Rectangular: two detections, one track; the nearer detection wins.
+  Eigen::MatrixXd wide(1, 2);
+  wide << 0.7, 0.2;
+  a = solve_assignment(wide);
+  EXPECT_THAT(a.row_to_col, ::testing::ElementsAre(1));
+  EXPECT_THAT(a.col_to_row, ::testing::ElementsAre(-1, 0));
+
+  // The gate: nothing within it, nothing assigned.
+  Eigen::MatrixXd far(2, 2);
+  far << 5, 6, 7, 8;
+  a = solve_assignment(far, 1.0);
+  EXPECT_EQ(a.pairs, 0);
+  EXPECT_THAT(a.row_to_col, ::testing::ElementsAre(-1, -1));
+
+  // More pairs beat a cheaper single pair.
+  Eigen::MatrixXd choice(2, 2);
+  choice << 0.1, 0.9, 0.9, kForbidden;
+  a = solve_assignment(choice);
+  EXPECT_EQ(a.pairs, 2);
+  EXPECT_THAT(a.row_to_col, ::testing::ElementsAre(1, 0));
+
+  EXPECT_EQ(solve_assignment(Eigen::MatrixXd(0, 3)).pairs, 0);
+}
+
+TEST(Lag, FindsAKnownDelay) {
+  std::vector<TimedPoint> truth, measured;
+  for (int i = 0; i <= 600; ++i) {
+    const double t = i / 30.0;
+    truth.push_back({t, {std::sin(0.5 * t), 0.5 * std::sin(t), 5.0}});
+  }
+  for (int i = 0; i <= 600; ++i) {
+    const double t = i / 30.0;
+    measured.push_back({t, {std::sin(0.5 * (t - 0.15)), 0.5 * std::sin(t - 0.15), 5.0}});
+  }
+  const auto lag = estimate_lag(truth, measured, 1.0, 0.001);
+  ASSERT_TRUE(lag);
+  EXPECT_NEAR(*lag, 0.15, 0.002);
+  EXPECT_NEAR(*estimate_lag(truth, truth, 1.0, 0.001), 0.0, 1e-9);
+  // Motionless curves have no lag to find.
+  std::vector<TimedPoint> still(10, TimedPoint{0.0, {1, 1, 1}});
+  for (int i = 0; i < 10; ++i) still[static_cast<std::size_t>(i)].t = i;
+  EXPECT_FALSE(estimate_lag(still, still));
+}
+
+TEST(Lag, InterpolatesLinearlyAndClamps) {
+  const std::vector<TimedPoint> truth = {{0.0, {0, 0, 0}}, {1.0, {2, 4, 6}}};
+  EXPECT_TRUE(interpolate(truth, 0.25).isApprox(Eigen::Vector3d(0.5, 1, 1.5)));
+  EXPECT_TRUE(interpolate(truth, -1).isApprox(Eigen::Vector3d(0, 0, 0)));
+  EXPECT_TRUE(interpolate(truth, 3).isApprox(Eigen::Vector3d(2, 4, 6)));
+}
