@@ -96,9 +96,11 @@ class Builder {
   void order_nodes();
   void parse_overrides(const std::vector<std::string>& overrides);
 
+  // `reserved_key`, if set, is a key of the map that is not a parameter (a component's 'type').
   std::optional<Params> check_params(const YAML::Node& params, const std::vector<ParamSpec>& specs,
                                      const std::string& owner, const SourceLocation& owner_where,
-                                     const std::map<std::string, Override>* overrides);
+                                     const std::map<std::string, Override>* overrides,
+                                     const std::string& reserved_key = {});
   std::optional<ParamValue> check_value(const YAML::Node& value, const SourceLocation& where, const ParamSpec& spec,
                                         const std::string& owner);
   bool in_range(double v, const ParamSpec& spec, const SourceLocation& where, const std::string& owner);
@@ -156,10 +158,10 @@ std::optional<double> Builder::number(const YAML::Node& n, const std::string& wh
 }
 
 void Builder::read_executor(const YAML::Node& n) {
-  YAML::Node type = n;
+  // yaml-cpp: assigning to a Node writes through to the tree, so pick the node at construction.
+  const YAML::Node type = n.IsMap() ? n["type"] : n;
   if (n.IsMap()) {
     check_keys(n, {"type", "default_policy"}, "executor");
-    type.reset(n["type"]);
     if (!type) {
       error(n, "executor needs a 'type' (lockstep or realtime)");
       return;
@@ -185,10 +187,9 @@ void Builder::read_executor(const YAML::Node& n) {
 }
 
 void Builder::read_clock(const YAML::Node& n, bool& clock_given) {
-  YAML::Node type = n;
+  const YAML::Node type = n.IsMap() ? n["type"] : n;
   if (n.IsMap()) {
     check_keys(n, {"type", "real_time_factor"}, "clock");
-    type.reset(n["type"]);
     if (!type) {
       error(n, "clock needs a 'type' (simulated or wall)");
       return;
@@ -362,17 +363,14 @@ std::optional<ParamValue> Builder::check_value(const YAML::Node& value, const So
       return ParamValue(std::move(list));
     }
     case ParamType::component: {
-      YAML::Node type_node = value;
-      YAML::Node component_params;
-      if (value.IsMap()) {
-        type_node.reset(value["type"]);
-        if (!type_node) {
-          diag_.error(where, fmt::format("{}: parameter '{}' needs a 'type' naming the {}", owner, spec.name,
-                                         spec.component_kind));
-          return std::nullopt;
-        }
-        component_params.reset(YAML::Clone(value));
-        component_params.remove("type");
+      // Either a name, or a map with 'type' and the component's own parameters (read in place,
+      // so that their positions survive).
+      const YAML::Node type_node = value.IsMap() ? value["type"] : value;
+      const YAML::Node component_params = value.IsMap() ? value : YAML::Node();
+      if (value.IsMap() && !type_node) {
+        diag_.error(where, fmt::format("{}: parameter '{}' needs a 'type' naming the {}", owner, spec.name,
+                                       spec.component_kind));
+        return std::nullopt;
       }
       if (!type_node.IsScalar()) return wrong_type("a " + spec.component_kind + " name or a map with 'type'");
       const std::string name = type_node.Scalar();
@@ -385,7 +383,7 @@ std::optional<ParamValue> Builder::check_value(const YAML::Node& value, const So
         return std::nullopt;
       }
       auto params = check_params(component_params, component->spec.params(),
-                                 fmt::format("{} {} '{}'", owner, spec.component_kind, name), where, nullptr);
+                                 fmt::format("{} {} '{}'", owner, spec.component_kind, name), where, nullptr, "type");
       if (!params) return std::nullopt;
       return ParamValue(ComponentConfig{name, std::make_shared<const Params>(std::move(*params))});
     }
@@ -395,7 +393,8 @@ std::optional<ParamValue> Builder::check_value(const YAML::Node& value, const So
 
 std::optional<Params> Builder::check_params(const YAML::Node& params, const std::vector<ParamSpec>& specs,
                                             const std::string& owner, const SourceLocation& owner_where,
-                                            const std::map<std::string, Override>* overrides) {
+                                            const std::map<std::string, Override>* overrides,
+                                            const std::string& reserved_key) {
   std::vector<std::string> names;
   for (const auto& s : specs) names.push_back(s.name);
   auto find_spec = [&](const std::string& name) -> const ParamSpec* {
@@ -417,6 +416,7 @@ std::optional<Params> Builder::check_params(const YAML::Node& params, const std:
     }
     for (auto it = params.begin(); it != params.end(); ++it) {
       const std::string name = it->first.Scalar();
+      if (!reserved_key.empty() && name == reserved_key) continue;
       if (given.count(name)) {
         error(it->first, fmt::format("{}: parameter '{}' is given twice", owner, name));
         ok = false;

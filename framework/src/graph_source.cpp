@@ -48,7 +48,8 @@ GraphSource GraphSource::from_string(const std::string& yaml, const std::string&
 std::vector<std::filesystem::path> GraphSource::plugin_paths() const {
   std::vector<std::filesystem::path> paths;
   if (!impl_->root.IsMap()) return paths;
-  const YAML::Node list = impl_->root["plugin_paths"];
+  const YAML::Node& root = impl_->root;  // const access: operator[] must not add the key
+  const YAML::Node list = root["plugin_paths"];
   if (!list.IsSequence()) return paths;
   const std::filesystem::path base = impl_->file.empty() ? std::filesystem::current_path()
                                                          : std::filesystem::absolute(impl_->file).parent_path();

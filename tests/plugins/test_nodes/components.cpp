@@ -1,0 +1,66 @@
+// A component kind for the tests: strategies a node builds by name from its parameters.
+#include <kestrel/plugin.hpp>
+
+#include <algorithm>
+
+#include "test_messages.hpp"
+
+namespace kestrel::test {
+
+struct Shaper {
+  static constexpr std::string_view kKind = "shaper";
+  virtual ~Shaper() = default;
+  virtual double shape(double value) const = 0;
+};
+
+class OffsetShaper final : public Shaper {
+ public:
+  static ComponentSpec spec() {
+    return ComponentSpec("offset", "Adds a constant").param(param("amount", 1.0).range(-100, 100).describe("added"));
+  }
+  explicit OffsetShaper(const Params& p) : amount_(p.get<double>("amount")) {}
+  double shape(double v) const override { return v + amount_; }
+
+ private:
+  double amount_;
+};
+KESTREL_REGISTER_COMPONENT(Shaper, OffsetShaper)
+
+class ClampShaper final : public Shaper {
+ public:
+  static ComponentSpec spec() {
+    return ComponentSpec("clamp", "Limits to a range")
+        .param(param("low", 0.0).describe("lower bound"))
+        .param(param("high", 1.0).describe("upper bound"));
+  }
+  explicit ClampShaper(const Params& p) : low_(p.get<double>("low")), high_(p.get<double>("high")) {}
+  double shape(double v) const override { return std::clamp(v, low_, high_); }
+
+ private:
+  double low_, high_;
+};
+KESTREL_REGISTER_COMPONENT(Shaper, ClampShaper)
+
+class Shape final : public Node {
+ public:
+  static constexpr Input<Number> kIn{"in"};
+  static constexpr Output<Number> kOut{"out"};
+  static NodeSpec spec() {
+    return NodeSpec("shape", "Applies a shaper component to each number")
+        .input(kIn, "numbers")
+        .output(kOut, "shaped numbers")
+        .param(component_param("shaper", "shaper", "offset").describe("how to shape"));
+  }
+  explicit Shape(NodeInit& init) : shaper_(init.make_component<Shaper>("shaper")) {}
+  void process(Context& ctx) override {
+    Number n = *ctx.get(kIn);
+    n.value = shaper_->shape(n.value);
+    ctx.publish(kOut, n);
+  }
+
+ private:
+  std::shared_ptr<Shaper> shaper_;
+};
+KESTREL_REGISTER_NODE(Shape)
+
+}  // namespace kestrel::test
