@@ -50,7 +50,7 @@ std::vector<std::filesystem::path> GraphSource::plugin_paths() const {
   if (!impl_->root.IsMap()) return paths;
   const YAML::Node& root = impl_->root;  // const access: operator[] must not add the key
   const YAML::Node list = root["plugin_paths"];
-  if (!list.IsSequence()) return paths;
+  if (!list || !list.IsSequence()) return paths;
   const std::filesystem::path base = impl_->file.empty() ? std::filesystem::current_path()
                                                          : std::filesystem::absolute(impl_->file).parent_path();
   for (const auto& entry : list) {

@@ -1,0 +1,45 @@
+#pragma once
+// Stereo matching and reprojection: OpenCV's StereoSGBM (or StereoBM) for disparity, and the
+// paper's equation (1) to turn valid disparities into camera-frame points.
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <opencv2/calib3d.hpp>
+#include <string>
+
+#include "kestrel/messages/stereo_frame.hpp"
+
+namespace kestrel::stereo {
+
+struct MatcherOptions {
+  std::string algorithm = "sgbm";  ///< sgbm or bm
+  std::string mode = "sgbm";       ///< sgbm, hh, sgbm_3way, hh4 (SGBM only)
+  int min_disparity = 0;
+  int num_disparities = 128;       ///< multiple of 16
+  int block_size = 5;              ///< odd
+  int p1 = 0;                      ///< 0: 8 * block_size^2
+  int p2 = 0;                      ///< 0: 32 * block_size^2
+  int uniqueness_ratio = 10;
+  int speckle_window_size = 100;
+  int speckle_range = 2;
+  int disp12_max_diff = 1;
+  int pre_filter_cap = 63;
+  int texture_threshold = 10;      ///< BM only
+};
+
+/// Throws kestrel::Error if the options are not ones OpenCV accepts.
+cv::Ptr<cv::StereoMatcher> make_matcher(const MatcherOptions& options);
+
+/// Disparity of a rectified pair (8-bit grey or BGR): CV_16S, in 1/16 pixel, negative = invalid.
+cv::Mat compute_disparity(cv::StereoMatcher& matcher, const cv::Mat& left, const cv::Mat& right);
+
+/// Equation (1): for each valid disparity d (pixels) at (u, v),
+///   [X Y Z] = b / d * [u - cx, v - cy, f],
+/// kept if min_depth <= Z <= max_depth. `step` samples every step-th pixel in each direction.
+pcl::PointCloud<pcl::PointXYZ>::Ptr reproject(const cv::Mat& disparity16, const msg::StereoCalibration& calibration,
+                                              double min_depth, double max_depth, int step = 1);
+
+/// A disparity map as a colour image for people (invalid pixels black).
+cv::Mat colourise_disparity(const cv::Mat& disparity16, int num_disparities);
+
+}  // namespace kestrel::stereo

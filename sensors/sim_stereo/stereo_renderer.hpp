@@ -1,0 +1,39 @@
+#pragma once
+// Renders a rectified stereo pair of a scene with MRPT's off-screen EGL renderer (CFBORender):
+// the left image from the camera pose, the right one from the same pose shifted by the baseline
+// along the optical x axis. Both share the pinhole calibration, as rectified images do.
+#include <mrpt/opengl/COpenGLScene.h>
+
+#include <memory>
+#include <opencv2/core/mat.hpp>
+
+#include "kestrel/geometry/frames.hpp"
+#include "kestrel/messages/stereo_frame.hpp"
+
+namespace mrpt::opengl {
+class CFBORender;
+}
+
+namespace kestrel::sim {
+
+class StereoRenderer {
+ public:
+  explicit StereoRenderer(const msg::StereoCalibration& calibration);
+  ~StereoRenderer();
+
+  /// Renders BGR images. The EGL context is made on the first call, on the calling thread.
+  void render(const mrpt::opengl::COpenGLScene& scene, const geometry::CameraPose& left, cv::Mat& left_bgr,
+              cv::Mat& right_bgr);
+
+  /// One view (BGR), for tests.
+  cv::Mat render_view(const mrpt::opengl::COpenGLScene& scene, const geometry::CameraPose& camera);
+
+ private:
+  msg::StereoCalibration calibration_;
+  std::unique_ptr<mrpt::opengl::CFBORender> fbo_;
+};
+
+/// fx (= fy) of a pinhole camera `width` pixels wide with horizontal field of view `hfov_deg`.
+double focal_from_hfov(int width, double hfov_deg);
+
+}  // namespace kestrel::sim
