@@ -16,9 +16,9 @@ cv::Mat make_texture(int size, const TextureStyle& style, std::uint64_t seed) {
       coarse.at<float>(y, x) = uniform(rng);
     }
   const int k = 2 * style.blotch_px + 1;
-  cv::GaussianBlur(coarse, coarse, cv::Size(k, k), 0, 0, cv::BORDER_WRAP);
+  cv::GaussianBlur(coarse, coarse, cv::Size(k, k), 0, 0, cv::BORDER_REFLECT);
   cv::normalize(coarse, coarse, 0.f, 1.f, cv::NORM_MINMAX);
-  cv::GaussianBlur(fine, fine, cv::Size(3, 3), 0, 0, cv::BORDER_WRAP);
+  cv::GaussianBlur(fine, fine, cv::Size(3, 3), 0, 0, cv::BORDER_REFLECT);
   cv::normalize(fine, fine, 0.f, 1.f, cv::NORM_MINMAX);
   cv::Mat mix = style.fine_weight * fine + (1.0 - style.fine_weight) * coarse;
 

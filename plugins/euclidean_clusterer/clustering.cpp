@@ -1,0 +1,43 @@
+#include "clustering.hpp"
+
+#include <pcl/search/kdtree.h>
+#include <pcl/segmentation/extract_clusters.h>
+
+namespace kestrel::clustering {
+
+Clusters find_clusters(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud, const ClusterOptions& o) {
+  Clusters result;
+  if (!cloud || cloud->empty()) return result;
+  auto tree = std::make_shared<pcl::search::KdTree<pcl::PointXYZ>>();
+  tree->setInputCloud(cloud);
+  std::vector<pcl::PointIndices> clusters;
+  pcl::EuclideanClusterExtraction<pcl::PointXYZ> extract;
+  extract.setClusterTolerance(o.tolerance_m);
+  extract.setMinClusterSize(o.min_points);
+  extract.setMaxClusterSize(o.max_points);
+  extract.setSearchMethod(tree);
+  extract.setInputCloud(cloud);
+  extract.extract(clusters);
+
+  for (const auto& c : clusters) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+    Eigen::Vector3d hi = -lo;
+    for (int i : c.indices) {
+      const auto& p = (*cloud)[static_cast<std::size_t>(i)];
+      const Eigen::Vector3d v(p.x, p.y, p.z);
+      sum += v;
+      lo = lo.cwiseMin(v);
+      hi = hi.cwiseMax(v);
+    }
+    msg::Detection d;
+    d.position = sum / static_cast<double>(c.indices.size());
+    d.extent = hi - lo;
+    d.point_count = static_cast<int>(c.indices.size());
+    result.detections.push_back(d);
+    result.indices.push_back(c.indices);
+  }
+  return result;
+}
+
+}  // namespace kestrel::clustering

@@ -1,0 +1,87 @@
+// The `euclidean_clusterer` node: PCL Euclidean cluster extraction; the centroid of every
+// cluster with 20 to 200 points is a detection (paper, section 2.2).
+#include <kestrel/messages/detections.hpp>
+#include <kestrel/messages/point_cloud.hpp>
+#include <kestrel/plot/line_plot.hpp>
+#include <kestrel/plugin.hpp>
+
+#include "clustering.hpp"
+
+namespace kestrel::clustering {
+
+class EuclideanClusterer final : public Node {
+ public:
+  static constexpr Input<msg::PointCloud> kCloud{"cloud"};
+  static constexpr Output<msg::Detections> kDetections{"detections"};
+
+  static NodeSpec spec() {
+    return NodeSpec("euclidean_clusterer", "Euclidean clusters (PCL); each cluster's centroid is a detection")
+        .details("Points closer than tolerance_m join one cluster. Clusters with fewer than min_points or more than "
+                 "max_points points are dropped: they are unlikely to be a drone (paper: 0.5 m, 20, 200). With "
+                 "--report, frame `snapshot_frame` is drawn as clusters.png (front and top views).")
+        .input(kCloud, "filtered camera-frame points")
+        .output(kDetections, "cluster centroids with point count and extent")
+        .param(param("tolerance_m", 0.5).range(0.001, 100.0).with_unit("m").describe("cluster distance (paper: 0.5 m)"))
+        .param(param("min_points", 20).range(1, 10000000).describe("smallest cluster kept (paper: 20)"))
+        .param(param("max_points", 200).range(1, 10000000).describe("largest cluster kept (paper: 200)"))
+        .param(param("snapshot_frame", 30).at_least(-1).describe("cloud index drawn as clusters.png with --report; -1 = none"));
+  }
+
+  explicit EuclideanClusterer(NodeInit& init) : snapshot_(init.param<std::int64_t>("snapshot_frame")) {
+    options_.tolerance_m = init.param<double>("tolerance_m");
+    options_.min_points = init.param<int>("min_points");
+    options_.max_points = init.param<int>("max_points");
+    if (options_.min_points > options_.max_points) throw Error("min_points must not exceed max_points");
+  }
+
+  void process(Context& ctx) override {
+    const auto in = ctx.get(kCloud);
+    if (!in->points) throw Error("point cloud message without points");
+    const Clusters clusters = find_clusters(in->points, options_);
+    if (clouds_++ == snapshot_ && !ctx.artifact_dir().empty()) draw(ctx.artifact_dir() / "clusters.png", *in->points, clusters);
+    msg::Detections out;
+    out.stamp = in->stamp;
+    out.frame = in->frame;
+    out.items = clusters.detections;
+    ctx.publish(kDetections, std::move(out));
+  }
+
+ private:
+  // Front (x, y) and top (x, z) views: all points grey, kept clusters in colour, centroids ringed.
+  static void draw(const std::filesystem::path& file, const pcl::PointCloud<pcl::PointXYZ>& cloud, const Clusters& c) {
+    plot::Panel front{"filtered cloud, front view (camera frame)", "x [m]", "-y [m] (up)", {}};
+    plot::Panel top{"filtered cloud, top view", "x [m]", "z [m] (depth)", {}};
+    plot::Series all_front{"all points", {}, {}, plot::Series::Style::points, {170, 170, 170}, 1};
+    plot::Series all_top = all_front;
+    for (const auto& p : cloud) {
+      all_front.x.push_back(p.x);
+      all_front.y.push_back(-p.y);
+      all_top.x.push_back(p.x);
+      all_top.y.push_back(p.z);
+    }
+    front.series.push_back(all_front);
+    top.series.push_back(all_top);
+    for (std::size_t k = 0; k < c.indices.size(); ++k) {
+      plot::Series f{"cluster " + std::to_string(k + 1) + " (" + std::to_string(c.indices[k].size()) + " pts)",
+                     {}, {}, plot::Series::Style::points, plot::palette(k + 1), 2};
+      plot::Series t = f;
+      for (int i : c.indices[k]) {
+        const auto& p = cloud[static_cast<std::size_t>(i)];
+        f.x.push_back(p.x);
+        f.y.push_back(-p.y);
+        t.x.push_back(p.x);
+        t.y.push_back(p.z);
+      }
+      front.series.push_back(f);
+      top.series.push_back(t);
+    }
+    plot::save_png(file, {front, top}, 1000, 420);
+  }
+
+  ClusterOptions options_;
+  std::int64_t snapshot_;
+  std::int64_t clouds_ = 0;
+};
+KESTREL_REGISTER_NODE(EuclideanClusterer)
+
+}  // namespace kestrel::clustering
