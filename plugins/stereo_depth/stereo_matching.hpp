@@ -15,8 +15,8 @@ struct MatcherOptions {
   std::string algorithm = "sgbm";  ///< sgbm or bm
   std::string mode = "sgbm";       ///< sgbm, hh, sgbm_3way, hh4 (SGBM only)
   int min_disparity = 0;
-  int num_disparities = 128;       ///< multiple of 16
-  int block_size = 5;              ///< odd
+  int num_disparities = 112;       ///< multiple of 16
+  int block_size = 7;              ///< odd
   int p1 = 0;                      ///< 0: 8 * block_size^2
   int p2 = 0;                      ///< 0: 32 * block_size^2
   int uniqueness_ratio = 10;

@@ -31,10 +31,12 @@ void add_quad(mrpt::opengl::CSetOfTexturedTriangles& mesh, const Eigen::Vector3d
 }  // namespace
 
 void add_box(mrpt::opengl::CSetOfTexturedTriangles& mesh, const Eigen::Vector3d& centre, const Eigen::Vector3d& size,
-             const Eigen::Matrix3d& rotation) {
+             const Eigen::Matrix3d& rotation, bool inward) {
   const Eigen::Vector3d h = size / 2.0;
+  // Mirroring y reverses every face's winding, so the faces look inward.
+  const double mirror = inward ? -1.0 : 1.0;
   auto corner = [&](double sx, double sy, double sz) {
-    return Eigen::Vector3d(centre + rotation * Eigen::Vector3d(sx * h.x(), sy * h.y(), sz * h.z()));
+    return Eigen::Vector3d(centre + rotation * Eigen::Vector3d(sx * h.x(), mirror * sy * h.y(), sz * h.z()));
   };
   // Faces: +x, -x, +y, -y, +z, -z (corners counter-clockwise seen from outside).
   add_quad(mesh, corner(1, -1, -1), corner(1, 1, -1), corner(1, 1, 1), corner(1, -1, 1), 1.0f, 1.0f);

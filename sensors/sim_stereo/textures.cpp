@@ -38,5 +38,6 @@ TextureStyle drone_style() { return {{25, 25, 25}, {235, 235, 235}, 0.7, 3}; }
 TextureStyle bark_style() { return {{20, 35, 55}, {70, 100, 130}, 0.6, 4}; }
 TextureStyle foliage_style() { return {{15, 55, 20}, {70, 160, 80}, 0.5, 5}; }
 TextureStyle concrete_style() { return {{90, 90, 95}, {200, 200, 205}, 0.6, 6}; }
+TextureStyle sky_style() { return {{200, 175, 150}, {250, 245, 240}, 0.25, 10}; }
 
 }  // namespace kestrel::sim

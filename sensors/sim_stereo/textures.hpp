@@ -21,5 +21,6 @@ TextureStyle drone_style();
 TextureStyle bark_style();
 TextureStyle foliage_style();
 TextureStyle concrete_style();
+TextureStyle sky_style();
 
 }  // namespace kestrel::sim

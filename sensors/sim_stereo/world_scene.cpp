@@ -31,6 +31,14 @@ WorldScene::WorldScene(const SceneOptions& options)
   light.diffuse = {0.6f, 0.6f, 0.6f, 1.0f};
   light.direction = {-0.3f, 0.2f, -0.93f};
 
+  // A cloudy sky on a box 250 m away: textured, so stereo matching finds its (near zero)
+  // disparity instead of matching sensor noise on a blank background.
+  auto sky = textured(sky_style(), seed_ * 7 + 6, 512);
+  sky->enableLight(false);
+  const double far = 250.0;
+  add_box(*sky, {0, 0, far / 2 - 1.0}, {2 * far, 2 * far, far}, Eigen::Matrix3d::Identity(), /*inward=*/true);
+  scene_->insert(sky);
+
   auto ground = textured(grass_style(), seed_ * 7 + 1);
   add_tiled_ground(*ground, options.ground_half_extent_m, 2.0);
   scene_->insert(ground);
