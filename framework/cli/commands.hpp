@@ -24,6 +24,7 @@ struct RunArgs : GraphArgs {
   std::optional<double> duration_s;
   std::optional<std::uint64_t> seed;
   std::string report_dir;
+  std::string executor;  // "", "lockstep" or "realtime": overrides the graph's choice
   bool stats = false;
   bool progress = true;
 };

@@ -85,6 +85,13 @@ int dot_command(const GraphArgs& args, const std::string& output) {
 int run_command(const RunArgs& args) {
   auto loaded = load(args);
   if (!loaded.graph) return kInvalidGraph;
+  if (args.executor == "realtime") {
+    loaded.graph->executor = ExecutorKind::realtime;
+    loaded.graph->clock = ClockKind::wall;
+  } else if (args.executor == "lockstep") {
+    loaded.graph->executor = ExecutorKind::lockstep;
+    loaded.graph->clock = ClockKind::simulated;
+  }
   install_signal_handlers();
   RunOptions options;
   options.duration_s = args.duration_s;

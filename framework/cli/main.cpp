@@ -22,6 +22,8 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--duration", run.duration_s, "run length in seconds (sim time for lockstep)");
   run_cmd->add_option("--seed", run.seed, "random seed (overrides the graph's)");
   run_cmd->add_option("--report", run.report_dir, "write DIR/report.json and DIR/report.md");
+  run_cmd->add_option("--executor", run.executor, "run with this executor instead of the graph's (realtime uses the wall clock)")
+      ->check(CLI::IsMember({"lockstep", "realtime"}));
   run_cmd->add_flag("--stats", run.stats, "print per-node and per-connection statistics at the end");
   run_cmd->add_flag("!--no-progress", run.progress, "no status line on the terminal");
 

@@ -7,10 +7,6 @@
 
 namespace kestrel::intruder {
 
-namespace {
-Eigen::Vector3d vec3(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
-}  // namespace
-
 class IntruderNode final : public Node {
  public:
   static constexpr Output<msg::GroundTruth> kTruth{"truth"};
@@ -53,7 +49,7 @@ class IntruderNode final : public Node {
   explicit IntruderNode(NodeInit& init)
       : id_(static_cast<std::uint64_t>(init.param<std::int64_t>("object_id"))),
         start_(init.param<double>("start_s")),
-        camera_(geometry::level_camera(vec3(init.param<std::vector<double>>("camera_position_m")),
+        camera_(geometry::level_camera(init.param<Eigen::Vector3d>("camera_position_m"),
                                        init.param<double>("camera_yaw_deg") * M_PI / 180.0)) {
     const std::string shape = init.param<std::string>("shape");
     const bool repeat = init.param<std::string>("at_end") == "repeat";
@@ -62,12 +58,12 @@ class IntruderNode final : public Node {
                                                   init.param<double>("half_width_m"),
                                                   init.param<double>("half_height_m"), init.param<double>("period_s"));
     } else if (shape == "line") {
-      trajectory_ = std::make_unique<StraightLine>(vec3(init.param<std::vector<double>>("line_start_m")),
-                                                   vec3(init.param<std::vector<double>>("line_end_m")),
+      trajectory_ = std::make_unique<StraightLine>(init.param<Eigen::Vector3d>("line_start_m"),
+                                                   init.param<Eigen::Vector3d>("line_end_m"),
                                                    init.param<double>("speed_mps"), repeat);
     } else if (shape == "random") {
-      trajectory_ = std::make_unique<RandomManoeuvre>(vec3(init.param<std::vector<double>>("random_centre_m")),
-                                                      vec3(init.param<std::vector<double>>("random_half_extent_m")),
+      trajectory_ = std::make_unique<RandomManoeuvre>(init.param<Eigen::Vector3d>("random_centre_m"),
+                                                      init.param<Eigen::Vector3d>("random_half_extent_m"),
                                                       init.param<double>("max_speed_mps"), init.seed());
     } else {
       const std::string file = init.param<std::string>("file");

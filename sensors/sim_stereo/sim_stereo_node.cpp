@@ -14,10 +14,6 @@
 
 namespace kestrel::sim {
 
-namespace {
-Eigen::Vector3d vec3(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
-}  // namespace
-
 class SimStereo final : public Node {
  public:
   static constexpr Input<msg::GroundTruth> kIntruders{"intruders"};
@@ -63,9 +59,9 @@ class SimStereo final : public Node {
   explicit SimStereo(NodeInit& init)
       : noise_sigma_(init.param<double>("noise_sigma")), color_(init.param<bool>("color")),
         min_depth_(init.param<double>("min_depth_m")), max_depth_(init.param<double>("max_depth_m")),
-        fixed_camera_(geometry::level_camera(vec3(init.param<std::vector<double>>("camera_position_m")),
+        fixed_camera_(geometry::level_camera(init.param<Eigen::Vector3d>("camera_position_m"),
                                              init.param<double>("camera_yaw_deg") * M_PI / 180.0)),
-        offset_(vec3(init.param<std::vector<double>>("camera_offset_m"))), scene_(scene_options(init)),
+        offset_(init.param<Eigen::Vector3d>("camera_offset_m")), scene_(scene_options(init)),
         renderer_(calibration(init)) {
     if (min_depth_ >= max_depth_) throw Error("min_depth_m must be below max_depth_m");
     calibration_ = calibration(init);

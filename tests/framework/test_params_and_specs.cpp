@@ -21,6 +21,10 @@ TEST(Params, TypedAccessWidensIntegersAndRefusesWrongTypes) {
   EXPECT_THROW(p.get<int>("x"), Error);
   EXPECT_THROW(p.get<std::uint8_t>("n"), Error);  // does not fit
   EXPECT_THROW(p.get<double>("missing"), Error);
+  p.set("position", std::vector<double>{1, 2, 3});
+  p.set("pair", std::vector<double>{1, 2});
+  EXPECT_TRUE(p.get<Eigen::Vector3d>("position").isApprox(Eigen::Vector3d(1, 2, 3)));
+  EXPECT_THROW(p.get<Eigen::Vector3d>("pair"), Error);
 }
 
 TEST(Params, SpecBuilderRecordsEverything) {

@@ -1,5 +1,6 @@
 #pragma once
 // The validated parameter values a node or component is built with.
+#include <Eigen/Core>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -51,6 +52,9 @@ T Params::get(const std::string& name) const {
     if (auto* s = std::get_if<std::string>(&v)) return *s;
   } else if constexpr (std::is_same_v<T, std::vector<double>>) {
     if (auto* l = std::get_if<std::vector<double>>(&v)) return *l;
+  } else if constexpr (std::is_same_v<T, Eigen::Vector3d>) {
+    // A position or offset: a list of three numbers (declare it with .with_length(3)).
+    if (auto* l = std::get_if<std::vector<double>>(&v); l && l->size() == 3) return {(*l)[0], (*l)[1], (*l)[2]};
   } else if constexpr (std::is_same_v<T, ComponentConfig>) {
     if (auto* c = std::get_if<ComponentConfig>(&v)) return *c;
   } else {

@@ -1,0 +1,140 @@
+// Time of each stage of the paper's detection chain at 640x480 on rendered frames (rendering
+// itself excluded), the whole chain's frame rate, and OpenCV SGBM alone on the same frames.
+#include <benchmark/benchmark.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include "clustering.hpp"
+#include "stereo_matching.hpp"
+#include "stereo_renderer.hpp"
+#include "trajectory.hpp"
+#include "voxel_grid.hpp"
+#include "world_scene.hpp"
+
+namespace {
+
+using namespace kestrel;
+
+struct Frames {
+  msg::StereoCalibration calibration;
+  std::vector<std::pair<cv::Mat, cv::Mat>> pairs;
+};
+
+// Ten frames of the intruder's figure-8 at 5 m, seen by the oCamS (fx 452 px), rendered once.
+const Frames& frames() {
+  static const Frames f = [] {
+    Frames out;
+    out.calibration.fx = out.calibration.fy = sim::focal_from_hfov(640, 70.6);
+    out.calibration.cx = 319.5;
+    out.calibration.cy = 239.5;
+    sim::SceneOptions options;
+    options.clutter_count = 0;
+    sim::WorldScene world(options);
+    sim::StereoRenderer renderer(out.calibration);
+    const auto camera = geometry::level_camera({0, 0, 2}, 0.0);
+    const intruder::FigureEight path(camera, 5.0, 1.0, 0.5, 12.0);
+    for (int i = 0; i < 10; ++i) {
+      world.set_intruder(1, path.at(i * 0.4).position, 0.0);
+      cv::Mat l, r, lg, rg;
+      renderer.render(world.scene(), camera, l, r);
+      cv::cvtColor(l, lg, cv::COLOR_BGR2GRAY);
+      cv::cvtColor(r, rg, cv::COLOR_BGR2GRAY);
+      out.pairs.emplace_back(lg, rg);
+    }
+    return out;
+  }();
+  return f;
+}
+
+stereo::MatcherOptions matcher_options(int mode) {
+  stereo::MatcherOptions o;  // the stereo_depth node's defaults
+  o.mode = mode == 0 ? "sgbm" : mode == 1 ? "sgbm_3way" : "bm";
+  if (mode == 2) {
+    o.algorithm = "bm";
+    o.block_size = 15;
+  }
+  return o;
+}
+
+const char* mode_name(int mode) { return mode == 0 ? "sgbm" : mode == 1 ? "sgbm_3way" : "bm"; }
+
+void BM_OpenCvMatcherAlone(benchmark::State& state) {
+  const auto matcher = stereo::make_matcher(matcher_options(static_cast<int>(state.range(0))));
+  std::size_t i = 0;
+  cv::Mat disparity;
+  for (auto _ : state) {
+    const auto& [l, r] = frames().pairs[i++ % frames().pairs.size()];
+    matcher->compute(l, r, disparity);
+    benchmark::DoNotOptimize(disparity.data);
+  }
+  state.SetLabel(mode_name(static_cast<int>(state.range(0))));
+  state.counters["fps"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_OpenCvMatcherAlone)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_StereoDepthStage(benchmark::State& state) {
+  const auto matcher = stereo::make_matcher(matcher_options(static_cast<int>(state.range(0))));
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const auto& [l, r] = frames().pairs[i++ % frames().pairs.size()];
+    const auto cloud = stereo::reproject(stereo::compute_disparity(*matcher, l, r), frames().calibration, 0.5, 15.0);
+    benchmark::DoNotOptimize(cloud->size());
+  }
+  state.SetLabel(mode_name(static_cast<int>(state.range(0))));
+}
+BENCHMARK(BM_StereoDepthStage)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+std::vector<pcl::PointCloud<pcl::PointXYZ>::Ptr> clouds() {
+  const auto matcher = stereo::make_matcher(matcher_options(0));
+  std::vector<pcl::PointCloud<pcl::PointXYZ>::Ptr> out;
+  for (const auto& [l, r] : frames().pairs)
+    out.push_back(stereo::reproject(stereo::compute_disparity(*matcher, l, r), frames().calibration, 0.5, 15.0));
+  return out;
+}
+
+void BM_VoxelFilterStage(benchmark::State& state) {
+  static const auto input = clouds();
+  std::size_t i = 0, points = 0;
+  for (auto _ : state) {
+    const auto& c = input[i++ % input.size()];
+    points += c->size();
+    benchmark::DoNotOptimize(voxel::downsample(*c, {})->size());
+  }
+  state.counters["points_in"] = static_cast<double>(points) / static_cast<double>(state.iterations());
+}
+BENCHMARK(BM_VoxelFilterStage)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_ClustererStage(benchmark::State& state) {
+  static const auto input = [] {
+    std::vector<pcl::PointCloud<pcl::PointXYZ>::ConstPtr> out;
+    for (const auto& c : clouds()) out.push_back(voxel::downsample(*c, {}));
+    return out;
+  }();
+  std::size_t i = 0, points = 0;
+  for (auto _ : state) {
+    const auto& c = input[i++ % input.size()];
+    points += c->size();
+    benchmark::DoNotOptimize(clustering::find_clusters(c, {}).detections.size());
+  }
+  state.counters["points_in"] = static_cast<double>(points) / static_cast<double>(state.iterations());
+}
+BENCHMARK(BM_ClustererStage)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The chain one frame after another on one thread of control (SGBM's own threads aside).
+void BM_WholeChain(benchmark::State& state) {
+  const auto matcher = stereo::make_matcher(matcher_options(static_cast<int>(state.range(0))));
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const auto& [l, r] = frames().pairs[i++ % frames().pairs.size()];
+    const auto cloud = stereo::reproject(stereo::compute_disparity(*matcher, l, r), frames().calibration, 0.5, 15.0);
+    const pcl::PointCloud<pcl::PointXYZ>::ConstPtr thin = voxel::downsample(*cloud, {});
+    benchmark::DoNotOptimize(clustering::find_clusters(thin, {}).detections.size());
+  }
+  state.SetLabel(mode_name(static_cast<int>(state.range(0))));
+  state.counters["fps"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_WholeChain)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();
