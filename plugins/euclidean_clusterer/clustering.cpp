@@ -8,7 +8,8 @@ namespace kestrel::clustering {
 Clusters find_clusters(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud, const ClusterOptions& o) {
   Clusters result;
   if (!cloud || cloud->empty()) return result;
-  auto tree = std::make_shared<pcl::search::KdTree<pcl::PointXYZ>>();
+  // Unsorted radius searches: clustering only needs the neighbours, not their order.
+  auto tree = std::make_shared<pcl::search::KdTree<pcl::PointXYZ>>(false);
   tree->setInputCloud(cloud);
   std::vector<pcl::PointIndices> clusters;
   pcl::EuclideanClusterExtraction<pcl::PointXYZ> extract;
