@@ -3,7 +3,7 @@
 # builds a plugin outside this tree.
 include(CMakePackageConfigHelpers)
 
-install(TARGETS kestrel kestrel_plot kestrel_algorithms EXPORT kestrelTargets
+install(TARGETS kestrel kestrel_plot kestrel_algorithms kestrel_tracking EXPORT kestrelTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS kestrel_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
