@@ -29,7 +29,16 @@ struct RunArgs : GraphArgs {
   bool progress = true;
 };
 
+struct MotArgs {
+  std::string ground_truth;
+  std::string test;
+  std::optional<double> iou;       // match 2D boxes with IoU >= this
+  std::optional<double> distance;  // or 3D points within this distance
+  std::string json;
+};
+
 int run_command(const RunArgs& args);
+int mot_command(const MotArgs& args);
 int validate_command(const GraphArgs& args);
 int dot_command(const GraphArgs& args, const std::string& output);
 int plugins_command();

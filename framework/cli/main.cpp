@@ -39,6 +39,16 @@ int main(int argc, char** argv) {
   dot_cmd->add_option("--set", dot.overrides, "override a parameter: node.param=value (repeatable)");
   dot_cmd->add_option("-o,--output", dot_output, "write to this file instead of stdout");
 
+  MotArgs mot;
+  auto* mot_cmd = app.add_subcommand("mot", "CLEAR-MOT and IDF1 of MOTChallenge CSV files (as py-motmetrics)");
+  mot_cmd->add_option("ground_truth", mot.ground_truth, "ground-truth file: frame,id,bb_left,bb_top,bb_width,bb_height,conf,x,y,z")
+      ->required();
+  mot_cmd->add_option("test", mot.test, "tracker output in the same format")->required();
+  mot_cmd->add_option("--iou", mot.iou, "match 2D boxes whose IoU is at least this (default 0.5)")->check(CLI::Range(0.0, 1.0));
+  mot_cmd->add_option("--dist", mot.distance, "match 3D points (x,y,z columns) within this distance instead")
+      ->check(CLI::PositiveNumber);
+  mot_cmd->add_option("--json", mot.json, "also write the metrics to this JSON file");
+
   auto* plugins_cmd = app.add_subcommand("plugins", "List every node type, component and message type");
 
   std::string inspect_name;
@@ -58,6 +68,7 @@ int main(int argc, char** argv) {
   if (*validate_cmd) return validate_command(validate);
   if (*dot_cmd) return dot_command(dot, dot_output);
   if (*plugins_cmd) return plugins_command();
+  if (*mot_cmd) return mot_command(mot);
   if (*inspect_cmd) return inspect_command(inspect_name);
   return kUsage;
 }

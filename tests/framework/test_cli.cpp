@@ -167,3 +167,35 @@ connections:
   EXPECT_EQ(run_cli({"dot", graph.string()}, &out), 0);
   EXPECT_THAT(out, HasSubstr("\"src\":out_out -> \"sink\":in_in"));
 }
+
+TEST(Cli, MotComputesClearMotOnMotChallengeFiles) {
+  const fs::path dir = temp_dir("mot");
+  // Two objects, three frames. The tracker adds a false positive (frame 1), misses object 2
+  // (frame 2), and follows object 2 with a new identity (frame 3): an ID switch.
+  std::ofstream(dir / "gt.txt") << "1,1,0,0,10,10,1,0,0,5\n1,2,100,0,10,10,1,2,0,5\n"
+                                   "2,1,0,0,10,10,1,0,0,5\n2,2,100,0,10,10,1,2,0,5\n"
+                                   "3,1,0,0,10,10,1,0,0,5\n3,2,100,0,10,10,1,2,0,5\n"
+                                   "3,9,50,50,10,10,0,9,9,9\n";  // conf 0: ignored
+  std::ofstream(dir / "test.txt") << "1,1,0,0,10,10,1,0,0,5\n1,2,100,0,10,10,1,2,0,5\n1,3,300,300,10,10,1,30,30,5\n"
+                                     "2,1,0,0,10,10,1,0,0,5\n"
+                                     "3,1,0,0,10,10,1,0,0,5\n3,3,100,0,10,10,1,2,0,5\n";
+  for (const std::vector<std::string>& mode : {std::vector<std::string>{"--iou", "0.5"}, std::vector<std::string>{"--dist", "0.5"}}) {
+    std::vector<std::string> args = {"mot", (dir / "gt.txt").string(), (dir / "test.txt").string(), "--json",
+                                     (dir / "m.json").string()};
+    args.insert(args.end(), mode.begin(), mode.end());
+    std::string out;
+    ASSERT_EQ(run_cli(args, &out), 0) << out;
+    const auto m = nlohmann::json::parse(read(dir / "m.json"));
+    EXPECT_DOUBLE_EQ(m.at("mota").get<double>(), 0.5) << mode[0];
+    EXPECT_EQ(m.at("fp"), 1);
+    EXPECT_EQ(m.at("fn"), 1);
+    EXPECT_EQ(m.at("idsw"), 1);
+    EXPECT_EQ(m.at("frag"), 1);
+    EXPECT_EQ(m.at("num_objects"), 6);
+    EXPECT_NEAR(m.at("idf1").get<double>(), 8.0 / 12.0, 1e-12);
+    EXPECT_NEAR(m.at("motp").get<double>(), 0.0, 1e-12);
+  }
+  std::string out;
+  EXPECT_EQ(run_cli({"mot", (dir / "missing.txt").string(), (dir / "test.txt").string()}, &out), 2);
+  EXPECT_THAT(out, HasSubstr("cannot open"));
+}

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "kestrel/algorithms/assignment.hpp"
+#include "kestrel/algorithms/clear_mot.hpp"
 #include "kestrel/algorithms/lag.hpp"
 
 using namespace kestrel::algorithms;
@@ -128,4 +129,50 @@ TEST(Lag, InterpolatesLinearlyAndClamps) {
   EXPECT_TRUE(interpolate(truth, 0.25).isApprox(Eigen::Vector3d(0.5, 1, 1.5)));
   EXPECT_TRUE(interpolate(truth, -1).isApprox(Eigen::Vector3d(0, 0, 0)));
   EXPECT_TRUE(interpolate(truth, 3).isApprox(Eigen::Vector3d(2, 4, 6)));
+}
+
+TEST(ClearMot, TheThreeFrameExampleOfPyMotmetrics) {
+  // py-motmetrics' README: objects 1 and 2, hypotheses 1..3, NaN where a pair may not match.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  ClearMotAccumulator acc;
+  Eigen::MatrixXd f0(2, 3);
+  f0 << 0.1, nan, 0.3, 0.5, 0.2, 0.3;
+  acc.update({1, 2}, {1, 2, 3}, f0);
+  Eigen::MatrixXd f1(2, 1);
+  f1 << 0.2, 0.4;
+  acc.update({1, 2}, {1}, f1);
+  Eigen::MatrixXd f2(2, 2);
+  f2 << 0.6, 0.2, 0.1, 0.6;
+  acc.update({1, 2}, {1, 3}, f2);
+  const auto s = acc.summary();
+  EXPECT_EQ(s.frames, 3u);
+  EXPECT_DOUBLE_EQ(s.mota, 0.5);
+  EXPECT_NEAR(s.motp, 0.340, 1e-12);
+  EXPECT_NEAR(s.idf1, 0.8333333333333334, 1e-12);
+  EXPECT_EQ(s.fp, 1u);
+  EXPECT_EQ(s.fn, 1u);
+  EXPECT_EQ(s.idsw, 1u);
+  EXPECT_EQ(s.fragmentations, 1u);
+  EXPECT_EQ(s.matches, 5u);
+  EXPECT_EQ(s.mostly_tracked, 1u);     // object 1: 3 of 3
+  EXPECT_EQ(s.partially_tracked, 1u);  // object 2: 2 of 3
+}
+
+TEST(ClearMot, CrossingTargetsSwapIdentitiesOnce) {
+  // Two objects cross; the tracker's hypotheses swap at the crossing and keep the swap.
+  ClearMotAccumulator acc;
+  for (int k = 0; k < 10; ++k) {
+    const double x1 = -1.0 + 0.2 * k, x2 = 1.0 - 0.2 * k;  // they meet between k = 4 and 5
+    const double h_a = k < 5 ? x1 : x2, h_b = k < 5 ? x2 : x1;
+    Eigen::MatrixXd d(2, 2);
+    d << std::abs(x1 - h_a), std::abs(x1 - h_b), std::abs(x2 - h_a), std::abs(x2 - h_b);
+    for (int i = 0; i < 4; ++i)
+      if (d(i / 2, i % 2) > 0.5) d(i / 2, i % 2) = std::numeric_limits<double>::quiet_NaN();
+    acc.update({1, 2}, {10, 20}, d);
+  }
+  const auto s = acc.summary();
+  EXPECT_EQ(s.idsw, 2u);  // both objects change hypothesis at the crossing
+  EXPECT_EQ(s.fp, 0u);
+  EXPECT_EQ(s.fn, 0u);
+  EXPECT_DOUBLE_EQ(s.mota, 1.0 - 2.0 / 20.0);
 }
