@@ -37,7 +37,15 @@ struct MotArgs {
   std::string json;
 };
 
+struct PlotArgs {
+  std::string csv;
+  std::string x;
+  std::vector<std::string> y;
+  std::string output;
+};
+
 int run_command(const RunArgs& args);
+int plot_command(const PlotArgs& args);
 int mot_command(const MotArgs& args);
 int validate_command(const GraphArgs& args);
 int dot_command(const GraphArgs& args, const std::string& output);

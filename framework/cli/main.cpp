@@ -49,6 +49,13 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   mot_cmd->add_option("--json", mot.json, "also write the metrics to this JSON file");
 
+  PlotArgs plot;
+  auto* plot_cmd = app.add_subcommand("plot", "Plot columns of a CSV file as PNG (one panel per y column)");
+  plot_cmd->add_option("csv", plot.csv, "CSV file with a header row")->required();
+  plot_cmd->add_option("--x", plot.x, "column for the x axis")->required();
+  plot_cmd->add_option("--y", plot.y, "columns to plot")->required()->delimiter(',');
+  plot_cmd->add_option("-o,--output", plot.output, "PNG file to write")->required();
+
   auto* plugins_cmd = app.add_subcommand("plugins", "List every node type, component and message type");
 
   std::string inspect_name;
@@ -69,6 +76,7 @@ int main(int argc, char** argv) {
   if (*dot_cmd) return dot_command(dot, dot_output);
   if (*plugins_cmd) return plugins_command();
   if (*mot_cmd) return mot_command(mot);
+  if (*plot_cmd) return plot_command(plot);
   if (*inspect_cmd) return inspect_command(inspect_name);
   return kUsage;
 }
