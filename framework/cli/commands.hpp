@@ -44,7 +44,28 @@ struct PlotArgs {
   std::string output;
 };
 
+struct SweepArgs {
+  std::string graph;
+  std::vector<std::string> params;     // node.param=start:stop:step
+  std::vector<std::string> overrides;  // fixed --set values
+  int seeds = 1;
+  std::optional<double> duration;
+  std::string report_dir;
+  int jobs = 0;  // 0: one per core
+};
+
+struct AbArgs {
+  std::string graph_a, graph_b;
+  std::vector<std::string> overrides;
+  int seeds = 10;
+  std::optional<double> duration;
+  std::string report_dir;
+  int jobs = 0;
+};
+
 int run_command(const RunArgs& args);
+int sweep_command(const SweepArgs& args);
+int ab_command(const AbArgs& args);
 int plot_command(const PlotArgs& args);
 int mot_command(const MotArgs& args);
 int validate_command(const GraphArgs& args);

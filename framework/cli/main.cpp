@@ -56,6 +56,27 @@ int main(int argc, char** argv) {
   plot_cmd->add_option("--y", plot.y, "columns to plot")->required()->delimiter(',');
   plot_cmd->add_option("-o,--output", plot.output, "PNG file to write")->required();
 
+  SweepArgs sweep;
+  auto* sweep_cmd = app.add_subcommand("sweep", "Run a graph over a grid of parameter values and seeds, in parallel");
+  sweep_cmd->add_option("graph", sweep.graph, "graph YAML file")->required();
+  sweep_cmd->add_option("--param", sweep.params, "node.param=start:stop:step (repeatable: a grid)")->required();
+  sweep_cmd->add_option("--set", sweep.overrides, "fixed override node.param=value (repeatable)");
+  sweep_cmd->add_option("--seeds", sweep.seeds, "seeds per grid point (1..N)")->check(CLI::Range(1, 100000));
+  sweep_cmd->add_option("--duration", sweep.duration, "run length in seconds");
+  sweep_cmd->add_option("--report", sweep.report_dir, "write DIR/sweep.csv, sweep.md, sweep.png and every run's report")
+      ->required();
+  sweep_cmd->add_option("--jobs", sweep.jobs, "runs at once (default: one per core)");
+
+  AbArgs ab;
+  auto* ab_cmd = app.add_subcommand("ab", "Compare two graphs on the same seeds: paired differences with 95% intervals");
+  ab_cmd->add_option("a", ab.graph_a, "graph A")->required();
+  ab_cmd->add_option("b", ab.graph_b, "graph B")->required();
+  ab_cmd->add_option("--set", ab.overrides, "override applied to both (repeatable)");
+  ab_cmd->add_option("--seeds", ab.seeds, "number of seeds (1..N), at least 2")->check(CLI::Range(2, 100000));
+  ab_cmd->add_option("--duration", ab.duration, "run length in seconds");
+  ab_cmd->add_option("--report", ab.report_dir, "write DIR/ab.md, ab.json and every run's report")->required();
+  ab_cmd->add_option("--jobs", ab.jobs, "runs at once (default: one per core)");
+
   auto* plugins_cmd = app.add_subcommand("plugins", "List every node type, component and message type");
 
   std::string inspect_name;
@@ -76,6 +97,8 @@ int main(int argc, char** argv) {
   if (*dot_cmd) return dot_command(dot, dot_output);
   if (*plugins_cmd) return plugins_command();
   if (*mot_cmd) return mot_command(mot);
+  if (*sweep_cmd) return sweep_command(sweep);
+  if (*ab_cmd) return ab_command(ab);
   if (*plot_cmd) return plot_command(plot);
   if (*inspect_cmd) return inspect_command(inspect_name);
   return kUsage;

@@ -1,0 +1,71 @@
+// kestrel sweep and kestrel ab on short runs of the tracking graphs.
+#include <gmock/gmock.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+extern char** environ;
+namespace fs = std::filesystem;
+
+namespace {
+
+int kestrel(std::vector<std::string> args) {
+  std::string cli = KESTREL_CLI;
+  std::vector<char*> argv = {cli.data()};
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = -1;
+  if (posix_spawn(&pid, cli.c_str(), nullptr, nullptr, argv.data(), environ) != 0) return -1;
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string read(const fs::path& f) {
+  std::ifstream in(f);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+}  // namespace
+
+TEST(Experiments, SweepRunsTheGridWithEverySeed) {
+  const fs::path dir = fs::temp_directory_path() / "kestrel-sweep-test";
+  fs::remove_all(dir);
+  ASSERT_EQ(kestrel({"sweep", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--param", "tracker.r=0.5:1.0:0.5",
+                     "--seeds", "2", "--duration", "0.5", "--report", dir.string()}),
+            0);
+  const std::string csv = read(dir / "sweep.csv");
+  EXPECT_THAT(csv, ::testing::StartsWith("tracker.r,seed,exit_code,"));
+  EXPECT_THAT(csv, ::testing::HasSubstr("\n0.5,1,0,"));
+  EXPECT_THAT(csv, ::testing::HasSubstr("\n1,2,0,"));
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);  // header + 2 values x 2 seeds
+  EXPECT_TRUE(fs::exists(dir / "sweep.md"));
+  EXPECT_TRUE(fs::exists(dir / "sweep.png"));
+  EXPECT_TRUE(fs::exists(dir / "runs" / "001_seed2" / "report.json"));
+  // A bad parameter fails before any run.
+  EXPECT_EQ(kestrel({"sweep", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--param", "tracker.rr=0.5:1:0.5",
+                     "--report", (dir / "bad").string()}),
+            2);
+  EXPECT_FALSE(fs::exists(dir / "bad" / "runs"));
+}
+
+TEST(Experiments, AbPairsSeedsAndNamesTheBetterGraph) {
+  const fs::path dir = fs::temp_directory_path() / "kestrel-ab-test";
+  fs::remove_all(dir);
+  ASSERT_EQ(kestrel({"ab", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml",
+                     KESTREL_SOURCE_DIR "/graphs/paper_tracking_particle.yaml", "--seeds", "2", "--duration", "1",
+                     "--report", dir.string()}),
+            0);
+  const auto ab = nlohmann::json::parse(read(dir / "ab.json"));
+  EXPECT_EQ(ab.at("seeds"), 2);
+  const auto& rmse = ab.at("metrics").at("tracking.rmse_m");
+  // Same detections on both sides (same seeds, same chain): only the tracker differs.
+  EXPECT_EQ(ab.at("metrics").at("detection.recall").at("better"), "equal");
+  EXPECT_NEAR(rmse.at("difference").get<double>(), rmse.at("mean_b").get<double>() - rmse.at("mean_a").get<double>(), 1e-12);
+  EXPECT_LE(rmse.at("ci95")[0].get<double>(), rmse.at("difference").get<double>());
+  EXPECT_GE(rmse.at("ci95")[1].get<double>(), rmse.at("difference").get<double>());
+  EXPECT_THAT(read(dir / "ab.md"), ::testing::HasSubstr("| tracking.mota |"));
+}
