@@ -9,6 +9,7 @@ namespace kestrel::intruder {
 
 class IntruderNode final : public Node {
  public:
+  static constexpr Input<msg::GroundTruth> kAlso{"also"};
   static constexpr Output<msg::GroundTruth> kTruth{"truth"};
 
   static NodeSpec spec() {
@@ -18,7 +19,9 @@ class IntruderNode final : public Node {
             "reference camera (camera_position_m, camera_yaw_deg), which also places the figure-8: in the plane "
             "normal to that camera's optical axis, distance_m in front of it. A camera model that moves "
             "republishes ground truth in its own frame.")
-        .output(kTruth, "the intruder's true state")
+        .input(kAlso, "other intruders' truth, published together with this one (chain intruders to fly several)",
+               {.trigger = Trigger::latest, .optional = true})
+        .output(kTruth, "the intruder's true state (and those arriving on `also`)")
         .param(param("shape", std::string("figure8")).one_of({"figure8", "line", "random", "file"}).describe("trajectory"))
         .param(param("rate_hz", 100.0).with_unit("Hz").range(1.0, 10000.0).describe("state publication rate"))
         .param(param("object_id", 1).at_least(0).describe("ground-truth id of this intruder"))
@@ -83,6 +86,16 @@ class IntruderNode final : public Node {
     object.velocity_world = s.velocity;
     object.position_camera = camera_.to_camera(s.position);
     truth.objects.push_back(object);
+    if (const auto others = ctx.get(kAlso)) {
+      // Move the others to this tick's time with their velocity, so all objects share one stamp.
+      const double dt = to_seconds(ctx.now() - others->stamp);
+      for (auto o : others->objects) {
+        if (o.id == id_) throw Error("two intruders share object_id " + std::to_string(id_));
+        o.position_world += o.velocity_world * dt;
+        o.position_camera = camera_.to_camera(o.position_world);
+        truth.objects.push_back(o);
+      }
+    }
     ctx.publish(kTruth, std::move(truth));
   }
 

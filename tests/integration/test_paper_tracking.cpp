@@ -32,3 +32,38 @@ TEST(PaperTracking, KeepsOneIdentityOnTheFigureEight) {
   const auto g = run_graph(*greedy.graph, host.registry(), options);
   EXPECT_GE(g.report.at("tracking").at("mota").get<double>(), 0.999);
 }
+
+namespace {
+
+RunResult run_graph_file(const std::string& file, double duration, const std::vector<std::string>& overrides = {}) {
+  static PluginHost* host = [] {
+    auto* h = new PluginHost();
+    h->load_search_path();
+    return h;
+  }();
+  auto built = build_graph(GraphSource::from_file(file), host->registry(), overrides);
+  EXPECT_TRUE(built.graph) << built.diagnostics.str();
+  if (!built.graph) return {};
+  RunOptions options;
+  options.duration_s = duration;
+  return run_graph(*built.graph, host->registry(), options);
+}
+
+}  // namespace
+
+TEST(TrackingScenarios, CoastsThroughATemporaryOcclusion) {
+  // Ten frames without detections from t = 1 s: the track is predicted through and keeps its id.
+  const auto r = run_graph_file(KESTREL_SOURCE_DIR "/graphs/tracking_occlusion.yaml", 3.0, {"occlusion.first_s=1.0"});
+  const auto& t = r.report.at("tracking");
+  EXPECT_EQ(t.at("idsw"), 0);
+  EXPECT_EQ(t.at("fragmentations"), 0);
+  EXPECT_GE(t.at("mota").get<double>(), 0.99);
+}
+
+TEST(TrackingScenarios, TwoCrossingIntrudersAreBothTracked) {
+  const auto r = run_graph_file(KESTREL_SOURCE_DIR "/graphs/crossing_intruders.yaml", 7.0);
+  const auto& t = r.report.at("tracking");
+  EXPECT_EQ(t.at("num_objects"), 2 * 210);  // two objects in every frame
+  EXPECT_EQ(t.at("mostly_tracked"), 2);
+  EXPECT_GE(t.at("mota").get<double>(), 0.9);
+}

@@ -1,0 +1,58 @@
+// The `detection_dropout` node: a temporary occlusion. It passes detections through, except
+// during blackouts of `frames` frames every `period_s` seconds, when it passes none.
+#include <kestrel/messages/detections.hpp>
+#include <kestrel/plugin.hpp>
+
+#include <cmath>
+
+namespace kestrel::scenario {
+
+class DetectionDropout final : public Node {
+ public:
+  static constexpr Input<msg::Detections> kIn{"detections"};
+  static constexpr Output<msg::Detections> kOut{"detections"};
+
+  static NodeSpec spec() {
+    return NodeSpec("detection_dropout", "Temporary occlusion: drops every detection for N frames at a time")
+        .details("Frames are counted as they arrive. From first_s on, every period_s a blackout of `frames` frames "
+                 "publishes an empty detection list (with the frame's stamp), as if the intruder were hidden.")
+        .input(kIn, "detections")
+        .output(kOut, "detections, empty during blackouts")
+        .param(param("frames", 10).range(0, 100000).describe("frames per blackout"))
+        .param(param("first_s", 3.0).range(0.0, 1e6).with_unit("s").describe("capture time of the first blackout"))
+        .param(param("period_s", 6.0).range(0.001, 1e6).with_unit("s").describe("time between blackout starts"));
+  }
+
+  explicit DetectionDropout(NodeInit& init)
+      : frames_(init.param<int>("frames")), first_(init.param<double>("first_s")), period_(init.param<double>("period_s")) {}
+
+  void process(Context& ctx) override {
+    const auto in = ctx.get(kIn);
+    const double t = to_seconds(in->stamp);
+    if (t >= first_) {
+      const auto blackout = static_cast<long>(std::floor((t - first_) / period_));
+      if (blackout != current_) {
+        current_ = blackout;
+        dropped_in_blackout_ = 0;
+      }
+      if (dropped_in_blackout_ < frames_) {
+        ++dropped_in_blackout_;
+        msg::Detections empty;
+        empty.stamp = in->stamp;
+        empty.frame = in->frame;
+        ctx.publish(kOut, std::move(empty));
+        return;
+      }
+    }
+    ctx.publish(kOut, in);
+  }
+
+ private:
+  int frames_;
+  double first_, period_;
+  long current_ = -1;
+  int dropped_in_blackout_ = 0;
+};
+KESTREL_REGISTER_NODE(DetectionDropout)
+
+}  // namespace kestrel::scenario
