@@ -2,6 +2,7 @@
 // the simulator's ground truth, added to report.json as "detection".
 #include <fmt/format.h>
 #include <kestrel/messages/detections.hpp>
+#include <kestrel/evaluation/truth_pairing.hpp>
 #include <kestrel/messages/ground_truth.hpp>
 #include <kestrel/plugin.hpp>
 
@@ -43,21 +44,20 @@ class DetectionEvaluator final : public Node {
 
   void process(Context& ctx) override {
     if (ctx.triggered_by(kTruth)) {
-      const auto truth = ctx.get(kTruth);
-      truths_[truth->stamp] = truth;
-      // Truth waits for its detections; keep a bounded backlog (frames the chain dropped).
-      while (truths_.size() > 300) truths_.erase(truths_.begin());
+      pairing_.add_truth(ctx.get(kTruth));
     } else {
       const auto detections = ctx.get(kDetections);
-      waiting_[detections->stamp] = {detections, to_seconds(ctx.now())};
+      pairing_.add(detections->stamp, detections, to_seconds(ctx.now()));
     }
-    score_ready();
+    pairing_.pair([this](const msg::Detections& d, const msg::GroundTruth& t, double arrival) {
+      if (to_seconds(t.stamp) >= skip_) score(d, t, arrival);
+    });
   }
 
   void finish(Context& ctx) override {
-    score_ready();
-    if (!waiting_.empty())
-      ctx.log().warn("{} detection message(s) had no ground truth with their capture time; not scored", waiting_.size());
+    if (pairing_.unpaired() > 0)
+      ctx.log().warn("{} detection message(s) had no ground truth with their capture time; not scored",
+                     pairing_.unpaired());
     const DetectionSummary s = scorer_.summary(max_lag_, lag_step_);
     nlohmann::json json = {{"frames", s.frames},
                            {"precision", s.precision},
@@ -81,25 +81,6 @@ class DetectionEvaluator final : public Node {
   }
 
  private:
-  struct Pending {
-    std::shared_ptr<const msg::Detections> detections;
-    double arrival_s;
-  };
-
-  void score_ready() {
-    for (auto it = waiting_.begin(); it != waiting_.end();) {
-      auto truth = truths_.find(it->first);
-      if (truth == truths_.end()) {
-        ++it;
-        continue;
-      }
-      const double capture = to_seconds(it->first);
-      if (capture >= skip_) score(*it->second.detections, *truth->second, it->second.arrival_s);
-      truths_.erase(truths_.begin(), std::next(truth));
-      it = waiting_.erase(it);
-    }
-  }
-
   void score(const msg::Detections& detections, const msg::GroundTruth& truth, double arrival_s) {
     std::vector<Eigen::Vector3d> found;
     for (const auto& d : detections.items) found.push_back(d.position);
@@ -128,8 +109,7 @@ class DetectionEvaluator final : public Node {
   DetectionScorer scorer_;
   double skip_, max_lag_, lag_step_;
   std::string section_;
-  std::map<Time, std::shared_ptr<const msg::GroundTruth>> truths_;
-  std::map<Time, Pending> waiting_;
+  TruthPairing<msg::Detections> pairing_;
   std::vector<std::string> rows_;
   std::vector<std::string> frames_;
 };

@@ -5,6 +5,7 @@
 #include <kestrel/plugin.hpp>
 #include <kestrel/tracking/constant_acceleration.hpp>
 #include <kestrel/tracking/track_manager.hpp>
+#include <kestrel/tracking/tracker_params.hpp>
 
 namespace kestrel::tracking {
 
@@ -35,7 +36,7 @@ class KalmanTracker final : public Node {
   static constexpr Output<msg::Tracks> kTracks{"tracks"};
 
   static NodeSpec spec() {
-    return NodeSpec("kalman_tracker", "Multi-target tracker: constant-acceleration Kalman filters (paper, 2.3)")
+    NodeSpec spec = NodeSpec("kalman_tracker", "Multi-target tracker: constant-acceleration Kalman filters (paper, 2.3)")
         .details("Each track is a 9-state constant-acceleration Kalman filter (position, velocity, acceleration) "
                  "measured by detection centroids. Q is the discrete white-noise-jerk model scaled by q, R = r I3, "
                  "P0 = p diag(1^2, 30^2, 5.5^2) per axis. Detections no track claims (beyond the associator's gate, "
@@ -46,28 +47,16 @@ class KalmanTracker final : public Node {
         .param(param("q", 1.0).range(0.0, 1e6).with_unit("m^2/s^5").describe("process noise (jerk) intensity"))
         .param(param("r", 1.0).range(1e-9, 1e6).with_unit("m^2")
                    .describe("measurement noise: R = r I3 (paper: best RMSE at r = 1.0)"))
-        .param(param("p", 1.0).range(1e-9, 1e6).describe("initial covariance scale: P0 = p diag(1, 900, 30.25)"))
-        .param(param("max_misses", 10).range(0, 100000).describe("consecutive missed frames before a track is deleted"))
-        .param(param("selection", std::string("longest_living")).one_of({"longest_living", "most_hits", "nearest"})
-                   .describe("which track is the target (paper: the longest-living)"))
-        .param(component_param("associator", "associator", "hungarian")
-                   .describe("data association: hungarian or greedy, with its metric and gate"));
+        .param(param("p", 1.0).range(1e-9, 1e6).describe("initial covariance scale: P0 = p diag(1, 900, 30.25)"));
+    return add_track_management_params(spec);
   }
 
   explicit KalmanTracker(NodeInit& init)
-      : manager_(init.make_component<Associator>("associator"),
-                 [q = init.param<double>("q"), r = init.param<double>("r"), p = init.param<double>("p")](
-                     const Eigen::Vector3d& z) { return std::make_unique<KalmanTrackFilter>(z, q, r, p); },
-                 TrackManagerOptions{init.param<int>("max_misses"), parse_selection(init.param<std::string>("selection"))}) {}
+      : manager_(make_track_manager(
+            init, [q = init.param<double>("q"), r = init.param<double>("r"), p = init.param<double>("p")](
+                      const Eigen::Vector3d& z) { return std::make_unique<KalmanTrackFilter>(z, q, r, p); })) {}
 
-  void process(Context& ctx) override {
-    const auto detections = ctx.get(kDetections);
-    std::vector<Eigen::Vector3d> positions;
-    for (const auto& d : detections->items) positions.push_back(d.position);
-    msg::Tracks tracks = manager_.step(detections->stamp, positions);
-    tracks.frame = detections->frame;
-    ctx.publish(kTracks, std::move(tracks));
-  }
+  void process(Context& ctx) override { ctx.publish(kTracks, track(manager_, *ctx.get(kDetections))); }
 
  private:
   TrackManager manager_;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <kestrel/algorithms/clear_mot.hpp>
 #include <kestrel/algorithms/lag.hpp>
+#include <kestrel/evaluation/truth_pairing.hpp>
 #include <kestrel/messages/ground_truth.hpp>
 #include <kestrel/messages/tracks.hpp>
 #include <kestrel/plugin.hpp>
@@ -40,26 +41,19 @@ class MotEvaluator final : public Node {
 
   void process(Context& ctx) override {
     if (ctx.triggered_by(kTruth)) {
-      const auto truth = ctx.get(kTruth);
-      truths_[truth->stamp] = truth;
-      while (truths_.size() > 300) truths_.erase(truths_.begin());
+      pairing_.add_truth(ctx.get(kTruth));
     } else {
       const auto tracks = ctx.get(kTracks);
-      waiting_[tracks->stamp] = {tracks, to_seconds(ctx.now())};
+      pairing_.add(tracks->stamp, tracks, to_seconds(ctx.now()));
     }
-    for (auto it = waiting_.begin(); it != waiting_.end();) {
-      auto truth = truths_.find(it->first);
-      if (truth == truths_.end()) {
-        ++it;
-        continue;
-      }
-      if (to_seconds(it->first) >= skip_) score(*it->second.tracks, *truth->second, it->second.arrival_s);
-      truths_.erase(truths_.begin(), std::next(truth));
-      it = waiting_.erase(it);
-    }
+    pairing_.pair([this](const msg::Tracks& tracks, const msg::GroundTruth& truth, double arrival) {
+      if (to_seconds(truth.stamp) >= skip_) score(tracks, truth, arrival);
+    });
   }
 
   void finish(Context& ctx) override {
+    if (pairing_.unpaired() > 0)
+      ctx.log().warn("{} track message(s) had no ground truth with their capture time; not scored", pairing_.unpaired());
     const auto s = acc_.summary();
     Eigen::Vector3d rmse = Eigen::Vector3d::Zero();
     if (selected_samples_ > 0) rmse = (selected_sq_ / static_cast<double>(selected_samples_)).cwiseSqrt();
@@ -91,11 +85,6 @@ class MotEvaluator final : public Node {
   }
 
  private:
-  struct Pending {
-    std::shared_ptr<const msg::Tracks> tracks;
-    double arrival_s;
-  };
-
   void score(const msg::Tracks& tracks, const msg::GroundTruth& truth, double arrival_s) {
     std::vector<std::uint64_t> objects, hypotheses;
     for (const auto& o : truth.objects) objects.push_back(o.id);
@@ -125,8 +114,7 @@ class MotEvaluator final : public Node {
   double radius_, skip_, max_lag_, lag_step_;
   std::string section_;
   algorithms::ClearMotAccumulator acc_;
-  std::map<Time, std::shared_ptr<const msg::GroundTruth>> truths_;
-  std::map<Time, Pending> waiting_;
+  TruthPairing<msg::Tracks> pairing_;
   Eigen::Vector3d selected_sq_ = Eigen::Vector3d::Zero();
   std::uint64_t selected_samples_ = 0;
   std::vector<algorithms::TimedPoint> truth_curve_, selected_curve_;

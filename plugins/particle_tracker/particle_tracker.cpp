@@ -4,6 +4,7 @@
 #include <kestrel/messages/tracks.hpp>
 #include <kestrel/plugin.hpp>
 #include <kestrel/tracking/track_manager.hpp>
+#include <kestrel/tracking/tracker_params.hpp>
 
 #include "particle_track_filter.hpp"
 
@@ -15,7 +16,7 @@ class ParticleTracker final : public Node {
   static constexpr Output<msg::Tracks> kTracks{"tracks"};
 
   static NodeSpec spec() {
-    return NodeSpec("particle_tracker", "Multi-target tracker: constant-acceleration particle filters (MRPT)")
+    NodeSpec spec = NodeSpec("particle_tracker", "Multi-target tracker: constant-acceleration particle filters (MRPT)")
         .details("Same contract as kalman_tracker. Each track is a particle filter (mrpt::bayes::CParticleFilter over "
                  "a CParticleFilterData model) whose particles follow the constant-acceleration model with "
                  "white-noise jerk of intensity q; a detection weights them by a Gaussian likelihood of variance r "
@@ -29,26 +30,13 @@ class ParticleTracker final : public Node {
         .param(param("q", 1.0).range(0.0, 1e6).with_unit("m^2/s^5").describe("process noise (jerk) intensity"))
         .param(param("r", 1.0).range(1e-9, 1e6).with_unit("m^2").describe("measurement noise variance per axis"))
         .param(param("p", 1.0).range(1e-9, 1e6).describe("initial spread: particles drawn from N(z, p diag(1, 900, 30.25))"))
-        .param(param("max_misses", 10).range(0, 100000).describe("consecutive missed frames before a track is deleted"))
-        .param(param("selection", std::string("longest_living")).one_of({"longest_living", "most_hits", "nearest"})
-                   .describe("which track is the target (paper: the longest-living)"))
-        .param(component_param("associator", "associator", "hungarian")
-                   .describe("data association: hungarian or greedy, with its metric and gate"));
+        .param(param("roughening", 0.2).range(0.0, 10.0).describe("jitter after resampling (Gordon's K); 0 = none"));
+    return add_track_management_params(spec);
   }
 
-  explicit ParticleTracker(NodeInit& init)
-      : manager_(init.make_component<Associator>("associator"), factory(init),
-                 TrackManagerOptions{init.param<int>("max_misses"), parse_selection(init.param<std::string>("selection"))}) {
-  }
+  explicit ParticleTracker(NodeInit& init) : manager_(make_track_manager(init, factory(init))) {}
 
-  void process(Context& ctx) override {
-    const auto detections = ctx.get(kDetections);
-    std::vector<Eigen::Vector3d> positions;
-    for (const auto& d : detections->items) positions.push_back(d.position);
-    msg::Tracks tracks = manager_.step(detections->stamp, positions);
-    tracks.frame = detections->frame;
-    ctx.publish(kTracks, std::move(tracks));
-  }
+  void process(Context& ctx) override { ctx.publish(kTracks, track(manager_, *ctx.get(kDetections))); }
 
  private:
   static FilterFactory factory(NodeInit& init) {
@@ -59,6 +47,7 @@ class ParticleTracker final : public Node {
     o.q = init.param<double>("q");
     o.r = init.param<double>("r");
     o.p = init.param<double>("p");
+    o.roughening = init.param<double>("roughening");
     // Each new track gets its own seed, derived from the node's: runs reproduce, tracks differ.
     return [o, seed = init.seed(), births = std::make_shared<std::uint64_t>(0)](const Eigen::Vector3d& z) {
       return std::make_unique<ParticleTrackFilter>(z, o, seed + 0x9e3779b97f4a7c15ull * ++*births);
