@@ -38,6 +38,7 @@ msg::Tracks TrackManager::step(Time stamp, const std::vector<Eigen::Vector3d>& d
       t.filter->update(detections[static_cast<std::size_t>(d)]);
       ++t.hits;
       t.misses = 0;
+      if (t.hits >= options_.confirm_hits) t.confirmed = true;
     } else {
       ++t.misses;
     }
@@ -47,13 +48,14 @@ msg::Tracks TrackManager::step(Time stamp, const std::vector<Eigen::Vector3d>& d
                 tracks_.end());
   for (std::size_t d = 0; d < detections.size(); ++d) {
     if (a.col_to_row[d] >= 0) continue;
-    tracks_.push_back(Track{next_id_++, 1, 1, 0, factory_(detections[d])});
+    tracks_.push_back(Track{next_id_++, 1, 1, 0, options_.confirm_hits <= 1, factory_(detections[d])});
   }
 
   msg::Tracks out;
   out.stamp = stamp;
   const Track* best = nullptr;
   for (const auto& t : tracks_) {
+    if (!t.confirmed) continue;  // tentative: not published, never the target
     msg::Track m;
     m.id = t.id;
     m.age = t.age;

@@ -218,6 +218,20 @@ TEST(TrackManager, BirthDeathAndTheLongestLivingTarget) {
   EXPECT_FALSE(out.selected_id);
 }
 
+TEST(TrackManager, TentativeTracksAreNotPublishedUntilConfirmed) {
+  TrackManager m(std::make_shared<HungarianAssociator>(Metric::euclidean, 1.0),
+                 [](const Eigen::Vector3d& z) { return std::make_unique<FixedFilter>(z); },
+                 TrackManagerOptions{2, Selection::longest_living, 3});
+  // A one-frame false alarm at (3, 0, 5) never shows; the real target appears at its third hit.
+  EXPECT_TRUE(m.step(frame(0), {{0, 0, 5}, {3, 0, 5}}).items.empty());
+  EXPECT_TRUE(m.step(frame(1), {{0, 0, 5}}).items.empty());
+  const auto out = m.step(frame(2), {{0, 0, 5}});
+  ASSERT_EQ(out.items.size(), 1u);
+  EXPECT_EQ(out.items[0].id, 1u);
+  EXPECT_EQ(*out.selected_id, 1u);
+  EXPECT_EQ(m.size(), 2u);  // the false alarm is still held, unpublished, until deleted
+}
+
 TEST(TrackManager, SelectionRules) {
   auto nearest = manager(5, Selection::nearest);
   nearest.step(frame(0), {{0, 0, 8}});

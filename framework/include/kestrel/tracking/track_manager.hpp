@@ -43,6 +43,9 @@ Selection parse_selection(const std::string& name);
 struct TrackManagerOptions {
   int max_misses = 10;  ///< consecutive frames without a detection before deletion
   Selection selection = Selection::longest_living;
+  /// Hits before a track is published (and can be the target); 1 publishes every track at
+  /// birth, as the paper does. More keeps one-frame noise out of the output.
+  int confirm_hits = 1;
 };
 
 class TrackManager {
@@ -58,6 +61,7 @@ class TrackManager {
   struct Track {
     std::uint64_t id = 0;
     int age = 0, hits = 0, misses = 0;
+    bool confirmed = false;
     std::unique_ptr<TrackFilter> filter;
   };
 
