@@ -2,6 +2,7 @@
 // the simulator's ground truth, added to report.json as "detection".
 #include <fmt/format.h>
 #include <kestrel/messages/detections.hpp>
+#include <kestrel/evaluation/scoring_params.hpp>
 #include <kestrel/evaluation/truth_pairing.hpp>
 #include <kestrel/messages/ground_truth.hpp>
 #include <kestrel/plugin.hpp>
@@ -19,7 +20,7 @@ class DetectionEvaluator final : public Node {
   static constexpr Input<msg::GroundTruth> kTruth{"truth"};
 
   static NodeSpec spec() {
-    return NodeSpec("detection_evaluator", "Precision, recall, RMSE and lag of detections against ground truth")
+    NodeSpec spec = NodeSpec("detection_evaluator", "Precision, recall, RMSE and lag of detections against ground truth")
         .details("Each frame's detections are matched to the truth of the same capture time by Hungarian assignment "
                  "of Euclidean distances; pairs farther than match_radius_m are never matched. Unmatched detections "
                  "are false positives; unmatched truth objects in view are misses. RMSE is per camera axis over "
@@ -28,19 +29,14 @@ class DetectionEvaluator final : public Node {
                  "lockstep, the processing delay under realtime. Adds \"detection\" to report.json and writes "
                  "detections.csv.")
         .input(kDetections, "detections to score")
-        .input(kTruth, "ground truth at each capture time")
-        .param(param("match_radius_m", 1.0).range(0.0, 100.0).with_unit("m")
-                   .describe("largest error still matched (paper: 1.0 m, its maximum reconstruction error)"))
-        .param(param("skip_first_s", 0.0).range(0.0, 1e6).with_unit("s").describe("frames captured earlier are not scored"))
-        .param(param("max_lag_s", 1.0).range(0.0, 100.0).with_unit("s").describe("lag search range"))
-        .param(param("lag_step_s", 0.001).range(1e-6, 1.0).with_unit("s").describe("lag search resolution"))
-        .param(param("section", std::string("detection")).describe("report.json key"));
+        .input(kTruth, "ground truth at each capture time");
+    return add_scoring_params(spec, "detection", "largest error still matched (paper: 1.0 m, its maximum reconstruction error)");
   }
 
-  explicit DetectionEvaluator(NodeInit& init)
-      : scorer_(init.param<double>("match_radius_m")), skip_(init.param<double>("skip_first_s")),
-        max_lag_(init.param<double>("max_lag_s")), lag_step_(init.param<double>("lag_step_s")),
-        section_(init.param<std::string>("section")) {}
+  explicit DetectionEvaluator(NodeInit& init) : DetectionEvaluator(scoring_params(init)) {}
+  explicit DetectionEvaluator(const ScoringParams& p)
+      : scorer_(p.match_radius_m), skip_(p.skip_first_s), max_lag_(p.max_lag_s), lag_step_(p.lag_step_s),
+        section_(p.section) {}
 
   void process(Context& ctx) override {
     if (ctx.triggered_by(kTruth)) {

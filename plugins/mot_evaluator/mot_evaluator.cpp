@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <kestrel/algorithms/clear_mot.hpp>
 #include <kestrel/algorithms/lag.hpp>
+#include <kestrel/evaluation/scoring_params.hpp>
 #include <kestrel/evaluation/truth_pairing.hpp>
 #include <kestrel/messages/ground_truth.hpp>
 #include <kestrel/messages/tracks.hpp>
@@ -19,25 +20,21 @@ class MotEvaluator final : public Node {
   static constexpr Input<msg::GroundTruth> kTruth{"truth"};
 
   static NodeSpec spec() {
-    return NodeSpec("mot_evaluator", "CLEAR-MOT and IDF1 of tracks against ground truth, and the target's RMSE and lag")
+    NodeSpec spec = NodeSpec("mot_evaluator", "CLEAR-MOT and IDF1 of tracks against ground truth, and the target's RMSE and lag")
         .details("Each frame, tracks are paired with the truth of the same capture time. Correspondences from earlier "
                  "frames are kept while their distance stays within match_radius_m; the rest are assigned by the "
                  "Hungarian method; a ground-truth object matched to another track than before is an identity "
                  "switch (MOT16, py-motmetrics). Also the RMSE of the selected track against the truth object it "
                  "follows, and the tracking lag by cross-correlation. Adds \"tracking\" to report.json.")
         .input(kTracks, "tracks to score")
-        .input(kTruth, "ground truth at each capture time")
-        .param(param("match_radius_m", 1.0).range(0.0, 100.0).with_unit("m").describe("largest distance still a match"))
-        .param(param("skip_first_s", 0.0).range(0.0, 1e6).with_unit("s").describe("frames captured earlier are not scored"))
-        .param(param("max_lag_s", 1.0).range(0.0, 100.0).with_unit("s").describe("lag search range"))
-        .param(param("lag_step_s", 0.001).range(1e-6, 1.0).with_unit("s").describe("lag search resolution"))
-        .param(param("section", std::string("tracking")).describe("report.json key"));
+        .input(kTruth, "ground truth at each capture time");
+    return add_scoring_params(spec, "tracking", "largest distance still a match");
   }
 
-  explicit MotEvaluator(NodeInit& init)
-      : radius_(init.param<double>("match_radius_m")), skip_(init.param<double>("skip_first_s")),
-        max_lag_(init.param<double>("max_lag_s")), lag_step_(init.param<double>("lag_step_s")),
-        section_(init.param<std::string>("section")) {}
+  explicit MotEvaluator(NodeInit& init) : MotEvaluator(scoring_params(init)) {}
+  explicit MotEvaluator(const ScoringParams& p)
+      : radius_(p.match_radius_m), skip_(p.skip_first_s), max_lag_(p.max_lag_s), lag_step_(p.lag_step_s),
+        section_(p.section) {}
 
   void process(Context& ctx) override {
     if (ctx.triggered_by(kTruth)) {
