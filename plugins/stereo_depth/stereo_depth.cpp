@@ -4,6 +4,7 @@
 #include <kestrel/messages/stereo_frame.hpp>
 #include <kestrel/plugin.hpp>
 
+#include <algorithm>
 #include <opencv2/imgcodecs.hpp>
 
 #include "stereo_matching.hpp"
@@ -40,16 +41,21 @@ class StereoDepth final : public Node {
         .param(param("min_depth_m", 0.5).range(0.01, 1000.0).with_unit("m").describe("nearest point kept (oCamS: 0.5 m)"))
         .param(param("max_depth_m", 15.0).range(0.01, 1000.0).with_unit("m").describe("farthest point kept (oCamS: 15 m)"))
         .param(param("pixel_step", 1).range(1, 16).with_unit("px").describe("reproject every n-th pixel and row"))
+        .param(param("downscale", 1).range(1, 8)
+                   .describe("match on images shrunk by this factor (num_disparities is divided by it too): "
+                             "faster, coarser depth"))
         .param(param("snapshot_frame", 30).at_least(-1).describe("frame index saved as PNG with --report; -1 = none"));
   }
 
   explicit StereoDepth(NodeInit& init)
       : min_depth_(init.param<double>("min_depth_m")), max_depth_(init.param<double>("max_depth_m")),
-        step_(init.param<int>("pixel_step")), snapshot_(init.param<std::int64_t>("snapshot_frame")) {
+        step_(init.param<int>("pixel_step")), downscale_(init.param<int>("downscale")),
+        snapshot_(init.param<std::int64_t>("snapshot_frame")) {
     options_.algorithm = init.param<std::string>("algorithm");
     options_.mode = init.param<std::string>("mode");
     options_.min_disparity = init.param<int>("min_disparity");
-    options_.num_disparities = init.param<int>("num_disparities");
+    // Disparities shrink with the images; keep OpenCV's multiple of 16.
+    options_.num_disparities = std::max(16, (init.param<int>("num_disparities") / downscale_ + 15) / 16 * 16);
     options_.block_size = init.param<int>("block_size");
     options_.p1 = init.param<int>("p1");
     options_.p2 = init.param<int>("p2");
@@ -65,11 +71,12 @@ class StereoDepth final : public Node {
 
   void process(Context& ctx) override {
     const auto frame = ctx.get(kFrame);
-    const cv::Mat disparity = compute_disparity(*matcher_, frame->left, frame->right);
+    const ScaledPair pair = downscale(frame->left, frame->right, frame->calibration, downscale_);
+    const cv::Mat disparity = compute_disparity(*matcher_, pair.left, pair.right);
     msg::PointCloud cloud;
     cloud.stamp = frame->stamp;
     cloud.frame = "camera";
-    cloud.points = reproject(disparity, frame->calibration, min_depth_, max_depth_, step_);
+    cloud.points = reproject(disparity, pair.calibration, min_depth_, max_depth_, step_);
     if (static_cast<std::int64_t>(frame->frame_index) == snapshot_ && !ctx.artifact_dir().empty()) {
       cv::imwrite((ctx.artifact_dir() / "left.png").string(), frame->left);
       cv::imwrite((ctx.artifact_dir() / "right.png").string(), frame->right);
@@ -82,6 +89,7 @@ class StereoDepth final : public Node {
   MatcherOptions options_;
   double min_depth_, max_depth_;
   int step_;
+  int downscale_;
   std::int64_t snapshot_;
   cv::Ptr<cv::StereoMatcher> matcher_;
 };

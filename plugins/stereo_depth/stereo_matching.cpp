@@ -75,6 +75,24 @@ pcl::PointCloud<pcl::PointXYZ>::Ptr reproject(const cv::Mat& disparity16, const 
   return cloud;
 }
 
+ScaledPair downscale(const cv::Mat& left, const cv::Mat& right, const msg::StereoCalibration& c, int factor) {
+  if (factor < 1) throw Error("downscale factor must be at least 1");
+  if (factor == 1) return {left, right, c};
+  ScaledPair out;
+  const double s = 1.0 / factor;
+  cv::resize(left, out.left, cv::Size(), s, s, cv::INTER_AREA);
+  cv::resize(right, out.right, cv::Size(), s, s, cv::INTER_AREA);
+  out.calibration = c;
+  out.calibration.width = out.left.cols;
+  out.calibration.height = out.left.rows;
+  out.calibration.fx = c.fx * s;
+  out.calibration.fy = c.fy * s;
+  // Pixel centres: original pixel u maps to (u + 0.5) / factor - 0.5.
+  out.calibration.cx = (c.cx + 0.5) * s - 0.5;
+  out.calibration.cy = (c.cy + 0.5) * s - 0.5;
+  return out;
+}
+
 cv::Mat colourise_disparity(const cv::Mat& disparity16, int num_disparities) {
   cv::Mat scaled;
   disparity16.convertTo(scaled, CV_8U, 255.0 / (16.0 * num_disparities));

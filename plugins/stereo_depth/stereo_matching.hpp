@@ -39,6 +39,14 @@ cv::Mat compute_disparity(cv::StereoMatcher& matcher, const cv::Mat& left, const
 pcl::PointCloud<pcl::PointXYZ>::Ptr reproject(const cv::Mat& disparity16, const msg::StereoCalibration& calibration,
                                               double min_depth, double max_depth, int step = 1);
 
+/// The pair and its calibration shrunk by an integer factor (area averaging), so that matching
+/// runs on factor^2 fewer pixels with factor times fewer disparities.
+struct ScaledPair {
+  cv::Mat left, right;
+  msg::StereoCalibration calibration;
+};
+ScaledPair downscale(const cv::Mat& left, const cv::Mat& right, const msg::StereoCalibration& calibration, int factor);
+
 /// A disparity map as a colour image for people (invalid pixels black).
 cv::Mat colourise_disparity(const cv::Mat& disparity16, int num_disparities);
 

@@ -86,6 +86,24 @@ TEST_P(MatcherOnShiftedTexture, RecoversTheShift) {
 
 INSTANTIATE_TEST_SUITE_P(Algorithms, MatcherOnShiftedTexture, ::testing::Values("sgbm", "bm"));
 
+TEST(Downscale, HalvesTheCalibrationAndKeepsDepth) {
+  const auto [left, right] = shifted_pair(24);
+  const ScaledPair half = downscale(left, right, calibration(), 2);
+  EXPECT_EQ(half.left.cols, 320);
+  EXPECT_EQ(half.left.rows, 240);
+  EXPECT_DOUBLE_EQ(half.calibration.fx, 226.0);
+  EXPECT_DOUBLE_EQ(half.calibration.cx, 159.75);
+  MatcherOptions options;
+  options.num_disparities = 32;
+  const auto matcher = make_matcher(options);
+  const auto cloud = reproject(compute_disparity(*matcher, half.left, half.right), half.calibration, 0.5, 15.0);
+  double z = 0;
+  for (const auto& p : *cloud) z += p.z;
+  // The same plane: f b / d is unchanged when f and d both halve.
+  EXPECT_NEAR(z / static_cast<double>(cloud->size()), 452.0 * 0.12 / 24, 0.05);
+  EXPECT_THROW(downscale(left, right, calibration(), 0), Error);
+}
+
 TEST(Matcher, RefusesOptionsOpenCvWouldReject) {
   MatcherOptions bad;
   bad.num_disparities = 100;
