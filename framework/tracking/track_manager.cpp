@@ -43,8 +43,12 @@ msg::Tracks TrackManager::step(Time stamp, const std::vector<Eigen::Vector3d>& d
       ++t.misses;
     }
   }
+  // A tentative track that misses once was noise: it goes at once, so it neither lingers in the
+  // association nor is confirmed later by an unrelated detection (SORT, Stone Soup's initiators).
   tracks_.erase(std::remove_if(tracks_.begin(), tracks_.end(),
-                               [&](const Track& t) { return t.misses > options_.max_misses; }),
+                               [&](const Track& t) {
+                                 return t.misses > options_.max_misses || (!t.confirmed && t.misses > 0);
+                               }),
                 tracks_.end());
   for (std::size_t d = 0; d < detections.size(); ++d) {
     if (a.col_to_row[d] >= 0) continue;

@@ -8,7 +8,7 @@ NodeSpec& add_track_management_params(NodeSpec& spec) {
   return spec
       .param(param("max_misses", 10).range(0, 100000).describe("consecutive missed frames before a track is deleted"))
       .param(param("confirm_hits", 1).range(1, 100000)
-                 .describe("hits before a track is published; 1 = at birth (the paper)"))
+                 .describe("hits before a track is published; 1 = at birth (the paper); a tentative track is deleted at its first miss"))
       .param(param("selection", std::string("longest_living")).one_of({"longest_living", "most_hits", "nearest"})
                  .describe("which track is the target (paper: the longest-living)"))
       .param(component_param("associator", "associator", "hungarian")

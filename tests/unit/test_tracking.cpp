@@ -225,11 +225,21 @@ TEST(TrackManager, TentativeTracksAreNotPublishedUntilConfirmed) {
   // A one-frame false alarm at (3, 0, 5) never shows; the real target appears at its third hit.
   EXPECT_TRUE(m.step(frame(0), {{0, 0, 5}, {3, 0, 5}}).items.empty());
   EXPECT_TRUE(m.step(frame(1), {{0, 0, 5}}).items.empty());
-  const auto out = m.step(frame(2), {{0, 0, 5}});
+  EXPECT_EQ(m.size(), 1u);  // the false alarm, tentative, was deleted at its first miss
+  auto out = m.step(frame(2), {{0, 0, 5}});
   ASSERT_EQ(out.items.size(), 1u);
   EXPECT_EQ(out.items[0].id, 1u);
   EXPECT_EQ(*out.selected_id, 1u);
-  EXPECT_EQ(m.size(), 2u);  // the false alarm is still held, unpublished, until deleted
+  // Intermittent noise at one place never adds up to a confirmed track: each blip is new.
+  for (int k = 3; k < 9; ++k) out = m.step(frame(k), k % 2 ? std::vector<Eigen::Vector3d>{{0, 0, 5}, {3, 0, 5}}
+                                                          : std::vector<Eigen::Vector3d>{{0, 0, 5}});
+  ASSERT_EQ(out.items.size(), 1u);
+  EXPECT_EQ(out.items[0].id, 1u);
+  // A confirmed track keeps its max_misses allowance.
+  out = m.step(frame(9), {});
+  out = m.step(frame(10), {});
+  ASSERT_EQ(out.items.size(), 1u);
+  EXPECT_EQ(out.items[0].misses, 2);
 }
 
 TEST(TrackManager, SelectionRules) {

@@ -44,7 +44,8 @@ struct TrackManagerOptions {
   int max_misses = 10;  ///< consecutive frames without a detection before deletion
   Selection selection = Selection::longest_living;
   /// Hits before a track is published (and can be the target); 1 publishes every track at
-  /// birth, as the paper does. More keeps one-frame noise out of the output.
+  /// birth, as the paper does. More keeps one-frame noise out of the output. A tentative track
+  /// (fewer hits) is deleted at its first miss.
   int confirm_hits = 1;
 };
 
