@@ -2,13 +2,15 @@
 // One track as a particle filter on MRPT's machinery (mrpt::bayes::CParticleFilter over a
 // CParticleFilterData model): each particle is a constant-acceleration state; prediction moves
 // every particle with the model and samples white-noise jerk; an update weights the particles by
-// the Gaussian likelihood of the detection, and MRPT normalises and resamples.
+// the Gaussian likelihood of the detection (in tempered stages when it is much sharper than the
+// cloud), MRPT normalises and resamples, and a shrinkage kernel regularises the copies.
 #include <mrpt/bayes/CParticleFilter.h>
 #include <mrpt/bayes/CParticleFilterCapable.h>
 #include <mrpt/bayes/CParticleFilterData.h>
 
 #include <random>
 #include <string>
+#include <vector>
 
 #include "kestrel/tracking/constant_acceleration.hpp"
 #include "kestrel/tracking/track_manager.hpp"
@@ -22,7 +24,8 @@ struct ParticleOptions {
   double p = 1.0;
   std::string resampling = "systematic";  ///< multinomial, residual, stratified, systematic
   double resample_below_ess = 0.5;         ///< resample when the effective sample size falls below this share
-  double roughening = 0.2;                 ///< jitter after resampling, Gordon's K (0 = none)
+  double kernel_bandwidth = 0.5;           ///< h of the regularisation kernel after resampling (0 = none)
+  int max_correction_stages = 10;          ///< tempered stages of one update at most (1 = plain update)
 };
 
 using ParticleData = mrpt::bayes::CParticleFilterData<State, mrpt::bayes::particle_storage_mode::VALUE>;
@@ -48,7 +51,8 @@ class ParticleTrackFilter final
 
  private:
   void moments(State& mean, Covariance& cov) const;
-  void roughen();
+  void regularise();
+  double largest_exponent(const std::vector<double>& log_likelihood, double remaining) const;
 
   ParticleOptions options_;
   mrpt::bayes::CParticleFilter filter_;
