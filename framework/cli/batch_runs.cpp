@@ -95,10 +95,10 @@ std::map<std::string, double> report_metrics(const nlohmann::json& report) {
 int better_direction(const std::string& metric) {
   if (metric.find("mean_error") != std::string::npos) return 0;  // a bias: neither way is better
   const std::string name = metric.substr(metric.rfind('.') + 1);
-  for (const char* up : {"mota", "idf1", "precision", "recall", "tp", "mostly_tracked", "selected_frames"})
+  for (const char* up : {"mota", "idf1", "precision", "recall", "tp", "mostly_tracked", "selected_frames", "on_target"})
     if (name == up) return 1;
   for (const char* down : {"motp_m", "idsw", "fp", "fn", "fragmentations", "mostly_lost", "rmse_m", "x", "y", "z",
-                           "lag_s"})
+                           "lag_s", "switches", "off_target", "missing"})
     if (name == down) return -1;
   if (metric.find("rmse") != std::string::npos) return -1;
   return 0;

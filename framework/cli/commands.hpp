@@ -56,7 +56,9 @@ struct SweepArgs {
 
 struct AbArgs {
   std::string graph_a, graph_b;
-  std::vector<std::string> overrides;
+  std::vector<std::string> overrides;    ///< applied to both
+  std::vector<std::string> overrides_a;  ///< applied to A only, after `overrides`
+  std::vector<std::string> overrides_b;
   int seeds = 10;
   std::optional<double> duration;
   std::string report_dir;

@@ -1,5 +1,6 @@
 // kestrel sweep and kestrel ab: many runs of graphs, in parallel, summarised with statistics.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cmath>
 #include <cstdio>
@@ -7,6 +8,7 @@
 #include <set>
 #include <sstream>
 #include <thread>
+#include <tuple>
 
 #include "batch_runs.hpp"
 #include "commands.hpp"
@@ -79,7 +81,7 @@ double t_quantile_975(int df) {
 // The metrics worth a column in a summary table (the CSV and JSON keep every metric).
 bool headline(const std::string& metric) {
   static const std::set<std::string> names = {"mota", "motp_m", "idf1", "idsw", "fp", "fn", "precision", "recall",
-                                              "rmse_m", "lag_s"};
+                                              "rmse_m", "lag_s", "switches"};
   return names.count(metric.substr(metric.rfind('.') + 1)) > 0 || metric.find(".rmse_m.") != std::string::npos;
 }
 
@@ -211,13 +213,16 @@ int sweep_command(const SweepArgs& args) {
 int ab_command(const AbArgs& args) {
   try {
     if (args.seeds < 2) throw Error("an A/B comparison needs at least 2 seeds");
-    check_graph(args.graph_a, args.overrides);
-    check_graph(args.graph_b, args.overrides);
+    std::vector<std::string> sets_a = args.overrides, sets_b = args.overrides;
+    sets_a.insert(sets_a.end(), args.overrides_a.begin(), args.overrides_a.end());
+    sets_b.insert(sets_b.end(), args.overrides_b.begin(), args.overrides_b.end());
+    check_graph(args.graph_a, sets_a);
+    check_graph(args.graph_b, sets_b);
     const std::filesystem::path dir = args.report_dir;
     std::vector<BatchJob> jobs;
     for (int seed = 1; seed <= args.seeds; ++seed)
-      for (const auto& [name, graph] : {std::pair{"A", args.graph_a}, std::pair{"B", args.graph_b}})
-        jobs.push_back({run_args(graph, args.overrides, seed, args.duration, dir / "runs" / fmt::format("{}_seed{}", name, seed)),
+      for (const auto& [name, graph, sets] : {std::tuple{"A", args.graph_a, sets_a}, std::tuple{"B", args.graph_b, sets_b}})
+        jobs.push_back({run_args(graph, sets, seed, args.duration, dir / "runs" / fmt::format("{}_seed{}", name, seed)),
                         dir / "runs" / fmt::format("{}_seed{}", name, seed)});
     const auto results = run_batch(jobs, jobs_or_cores(args.jobs));
 
@@ -235,12 +240,17 @@ int ab_command(const AbArgs& args) {
       for (const auto& [k, va] : ma)
         if (auto it = mb.find(k); it != mb.end()) pairs[k].emplace_back(va, it->second);
     }
-    nlohmann::json json = {{"a", args.graph_a}, {"b", args.graph_b}, {"seeds", args.seeds}, {"failed_seeds", failed},
-                           {"metrics", nlohmann::json::object()}};
+    nlohmann::json json = {{"a", args.graph_a},         {"b", args.graph_b},     {"set", args.overrides},
+                           {"set_a", args.overrides_a}, {"set_b", args.overrides_b}, {"seeds", args.seeds},
+                           {"failed_seeds", failed},    {"metrics", nlohmann::json::object()}};
+    auto described = [](const std::string& graph, const std::vector<std::string>& sets) {
+      return sets.empty() ? graph : fmt::format("{} with {}", graph, fmt::join(sets, ", "));
+    };
     std::string md = fmt::format(
-        "# A/B: {} (A) against {} (B)\n\n{} seeds, paired by seed. Difference = B - A, with its 95% confidence "
+        "# A/B: {} (A) against {} (B)\n\n{} seeds, paired by seed{}. Difference = B - A, with its 95% confidence "
         "interval (Student's t).\n\n| metric | mean A | mean B | B - A | 95% CI | better |\n|---|---:|---:|---:|---|---|\n",
-        args.graph_a, args.graph_b, args.seeds);
+        described(args.graph_a, args.overrides_a), described(args.graph_b, args.overrides_b), args.seeds,
+        args.overrides.empty() ? "" : fmt::format(", both with {}", fmt::join(args.overrides, ", ")));
     for (const auto& [metric, values] : pairs) {
       const int direction = better_direction(metric);
       if (direction == 0 || !headline(metric)) continue;

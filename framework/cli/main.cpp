@@ -72,6 +72,8 @@ int main(int argc, char** argv) {
   ab_cmd->add_option("a", ab.graph_a, "graph A")->required();
   ab_cmd->add_option("b", ab.graph_b, "graph B")->required();
   ab_cmd->add_option("--set", ab.overrides, "override applied to both (repeatable)");
+  ab_cmd->add_option("--set-a", ab.overrides_a, "override applied to A only (repeatable; A and B may be one graph)");
+  ab_cmd->add_option("--set-b", ab.overrides_b, "override applied to B only (repeatable)");
   ab_cmd->add_option("--seeds", ab.seeds, "number of seeds (1..N), at least 2")->check(CLI::Range(2, 100000));
   ab_cmd->add_option("--duration", ab.duration, "run length in seconds");
   ab_cmd->add_option("--report", ab.report_dir, "write DIR/ab.md, ab.json and every run's report")->required();
