@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <functional>
 #include <sstream>
 #include <map>
 #include <set>
@@ -47,8 +48,9 @@ std::optional<QueuePolicy> QueuePolicy::parse(const std::string& text) {
 
 namespace {
 
-const std::vector<std::string> kTopLevelKeys = {"kestrel", "name", "description", "plugin_paths", "executor",
-                                                "clock", "seed", "duration", "on_error", "nodes", "connections"};
+const std::vector<std::string> kTopLevelKeys = {"kestrel", "name",     "description", "plugin_paths",
+                                                "include", "executor", "clock",       "seed",
+                                                "duration", "on_error", "nodes",      "connections"};
 const std::vector<std::string> kNodeKeys = {"id", "type", "params", "description"};
 const std::vector<std::string> kConnectionKeys = {"from", "to", "policy", "delayed"};
 const char* kPolicyForms = "expected 'latest', 'fifo N' or 'block N'";
@@ -74,12 +76,16 @@ struct Override {
 
 class Builder {
  public:
-  Builder(const GraphSource::Impl& src, const Registry& registry) : src_(src), registry_(registry) {}
+  Builder(const GraphSource::Impl& src, const Registry& registry) : src_(src), cur_(&src), registry_(registry) {}
 
   BuildResult build(const std::vector<std::string>& overrides);
 
  private:
-  SourceLocation at(const YAML::Node& n) const { return src_.at(n); }
+  SourceLocation at(const YAML::Node& n) const { return cur_->at(n); }
+  // Where an earlier definition is, as seen from the file being read: "line N" in the same file.
+  std::string earlier(const SourceLocation& where) const {
+    return where.file == cur_->label ? fmt::format("line {}", where.line) : where.str();
+  }
   void error(const YAML::Node& n, std::string message) { diag_.error(at(n), std::move(message)); }
 
   // Checks that `map` is a map whose keys are all in `allowed` (and not repeated).
@@ -90,6 +96,9 @@ class Builder {
   void read_header();
   void read_executor(const YAML::Node& n);
   void read_clock(const YAML::Node& n, bool& clock_given);
+  void read_fragments();
+  void check_overrides_name_nodes();
+  void add_include_sets(const GraphSource::Impl& file);
   void read_nodes();
   void read_connections();
   void check_inputs_connected();
@@ -112,6 +121,8 @@ class Builder {
   std::optional<Endpoint> endpoint(const YAML::Node& n, bool output);
 
   const GraphSource::Impl& src_;
+  const GraphSource::Impl* cur_;  // the file being read: the graph or one it includes
+  std::vector<const GraphSource::Impl*> files_;  // included files depth-first, then the graph itself
   const Registry& registry_;
   Diagnostics diag_;
   GraphConfig g_;
@@ -122,6 +133,7 @@ class Builder {
   // Inputs named by a connection that failed for another reason: not also "not connected".
   std::set<std::pair<int, int>> attempted_inputs_;
   std::set<int> nodes_with_broken_inputs_;
+  std::map<std::pair<int, int>, SourceLocation> input_taken_;  // (node, input) -> its connection
 };
 
 bool Builder::check_keys(const YAML::Node& map, const std::vector<std::string>& allowed, const std::string& what) {
@@ -462,12 +474,47 @@ std::optional<Params> Builder::check_params(const YAML::Node& params, const std:
   return result;
 }
 
-void Builder::read_nodes() {
-  const YAML::Node nodes = src_.root["nodes"];
-  if (!nodes) {
-    diag_.error(at(src_.root), "the graph has no 'nodes' list");
-    return;
+// Every file's nodes, then every file's connections, so that a graph can connect to the nodes of
+// the graphs it includes.
+void Builder::read_fragments() {
+  bool any_nodes = false;
+  for (const auto* file : files_) {
+    cur_ = file;
+    const YAML::Node& root = file->root;
+    if (root["nodes"]) any_nodes = true;
+    read_nodes();
   }
+  cur_ = &src_;
+  if (!any_nodes) diag_.error(at(src_.root), "the graph has no 'nodes' list");
+  for (const auto* file : files_) {
+    cur_ = file;
+    read_connections();
+  }
+  cur_ = &src_;
+}
+
+// An include's `set:` entries, outer files first: a value set nearer the top wins (and --set
+// over all of them, as it was parsed before).
+void Builder::add_include_sets(const GraphSource::Impl& file) {
+  for (const auto& include : file.includes) {
+    if (!include.set) continue;
+    for (auto it = include.set.begin(); it != include.set.end(); ++it) {
+      const std::string key = it->first.Scalar();
+      const auto dot = key.find('.');
+      if (dot == std::string::npos || dot == 0 || dot + 1 == key.size()) {
+        diag_.error(file.at(it->first), "an include's 'set' key is node.param, not '" + key + "'");
+        continue;
+      }
+      overrides_[key.substr(0, dot)].emplace(key.substr(dot + 1), Override{it->second, file.at(it->first)});
+    }
+  }
+  for (const auto& include : file.includes) add_include_sets(*include.source);
+}
+
+void Builder::read_nodes() {
+  const YAML::Node& root = cur_->root;
+  const YAML::Node nodes = root["nodes"];
+  if (!nodes) return;
   if (!nodes.IsSequence()) {
     error(nodes, "'nodes' must be a list");
     return;
@@ -492,8 +539,8 @@ void Builder::read_nodes() {
       continue;
     }
     if (auto prior = node_index_.find(config.id); prior != node_index_.end()) {
-      error(id, fmt::format("duplicate node id '{}' (first defined at line {})", config.id,
-                            g_.nodes[static_cast<std::size_t>(prior->second)].where.line));
+      error(id, fmt::format("duplicate node id '{}' (first defined at {})", config.id,
+                            earlier(g_.nodes[static_cast<std::size_t>(prior->second)].where)));
       continue;
     }
     config.type = registry_.find_node(*type_text);
@@ -511,6 +558,9 @@ void Builder::read_nodes() {
     node_ok_.push_back(config.type != nullptr);
     g_.nodes.push_back(std::move(config));
   }
+}
+
+void Builder::check_overrides_name_nodes() {
   for (const auto& [node, params] : overrides_) {
     if (node_index_.count(node)) continue;
     for (const auto& [_, o] : params)
@@ -560,13 +610,13 @@ std::optional<Builder::Endpoint> Builder::endpoint(const YAML::Node& n, bool out
 }
 
 void Builder::read_connections() {
-  const YAML::Node list = src_.root["connections"];
+  const YAML::Node& root = cur_->root;
+  const YAML::Node list = root["connections"];
   if (!list) return;
   if (!list.IsSequence()) {
     error(list, "'connections' must be a list");
     return;
   }
-  std::map<std::pair<int, int>, int> input_taken;  // (node, input) -> line of the connection
   for (const auto& c : list) {
     if (!check_keys(c, kConnectionKeys, "a connection")) continue;
     const YAML::Node from = c["from"];
@@ -608,12 +658,12 @@ void Builder::read_connections() {
       continue;
     }
     const auto key = std::make_pair(target->node, target->port);
-    if (auto prior = input_taken.find(key); prior != input_taken.end()) {
-      error(to, fmt::format("input {} is already connected (line {}); an input takes one connection", to.Scalar(),
-                            prior->second));
+    if (auto prior = input_taken_.find(key); prior != input_taken_.end()) {
+      error(to, fmt::format("input {} is already connected ({}); an input takes one connection", to.Scalar(),
+                            earlier(prior->second)));
       continue;
     }
-    input_taken[key] = config.where.line;
+    input_taken_[key] = config.where;
     config.from_node = source->node;
     config.from_port = source->port;
     config.to_node = target->node;
@@ -700,8 +750,25 @@ BuildResult Builder::build(const std::vector<std::string>& overrides) {
   check_keys(root, kTopLevelKeys, "the graph");
   read_header();
   parse_overrides(overrides);
-  read_nodes();
-  read_connections();
+  add_include_sets(src_);
+  // Included graphs contribute nodes and connections; their header (executor, seed, ...) is the
+  // including graph's to choose.
+  std::function<void(const GraphSource::Impl&)> collect = [&](const GraphSource::Impl& file) {
+    for (const auto& include : file.includes) collect(*include.source);
+    if (&file != &src_) {
+      cur_ = &file;
+      if (!file.root.IsMap())
+        diag_.error(at(file.root), "an included graph file must be a YAML map with 'nodes' and 'connections'");
+      else if (check_keys(file.root, kTopLevelKeys, "the included graph"))
+        files_.push_back(&file);
+      cur_ = &src_;
+      return;
+    }
+    files_.push_back(&file);
+  };
+  collect(src_);
+  read_fragments();
+  check_overrides_name_nodes();
   check_inputs_connected();
   if (!diag_.has_errors()) order_nodes();
   diag_.sort();

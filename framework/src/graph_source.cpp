@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -10,7 +11,15 @@ GraphSource::~GraphSource() = default;
 GraphSource::GraphSource(GraphSource&&) noexcept = default;
 GraphSource& GraphSource::operator=(GraphSource&&) noexcept = default;
 
+std::filesystem::path GraphSource::Impl::folder() const {
+  return file.empty() ? std::filesystem::current_path() : std::filesystem::absolute(file).parent_path();
+}
+
 namespace {
+
+// Includes deeper than this are taken for a runaway chain even without a repeated file.
+constexpr std::size_t kMaxIncludeDepth = 16;
+
 std::unique_ptr<GraphSource::Impl> parse(const std::string& text, std::string label, std::filesystem::path file) {
   auto impl = std::make_unique<GraphSource::Impl>();
   impl->label = std::move(label);
@@ -24,40 +33,112 @@ std::unique_ptr<GraphSource::Impl> parse(const std::string& text, std::string la
   }
   return impl;
 }
-}  // namespace
 
-GraphSource GraphSource::from_file(const std::filesystem::path& file) {
+std::unique_ptr<GraphSource::Impl> read_file(const std::filesystem::path& file, const std::string& label) {
   std::ifstream in(file);
   if (!in) {
-    auto impl = std::make_unique<Impl>();
-    impl->label = file.string();
+    auto impl = std::make_unique<GraphSource::Impl>();
+    impl->label = label;
     impl->file = file;
-    impl->read_errors.error(SourceLocation{file.string(), 0, 0},
+    impl->read_errors.error(SourceLocation{label, 0, 0},
                             std::filesystem::exists(file) ? "cannot read the graph file" : "no such graph file");
-    return GraphSource(std::move(impl));
+    return impl;
   }
   std::stringstream text;
   text << in.rdbuf();
-  return GraphSource(parse(text.str(), file.string(), file));
+  return parse(text.str(), label, file);
+}
+
+// Reads the files `impl` includes, and theirs. `chain` holds the files being read, outermost
+// first, to refuse a file that includes itself.
+void read_includes(GraphSource::Impl& impl, std::vector<std::filesystem::path>& chain) {
+  if (!impl.root.IsMap()) return;
+  const YAML::Node& root = impl.root;  // const access: operator[] must not add the key
+  const YAML::Node list = root["include"];
+  if (!list) return;
+  if (!list.IsSequence()) {
+    impl.read_errors.error(impl.at(list), "'include' must be a list of graph files");
+    return;
+  }
+  for (const auto& entry : list) {
+    // Never assign to a YAML::Node: it would write through to the document. Fresh handles only.
+    const YAML::Node file_node = entry.IsMap() ? entry["file"] : entry;
+    const YAML::Node set = entry.IsMap() ? entry["set"] : YAML::Node(YAML::NodeType::Undefined);
+    if (entry.IsMap()) {
+      for (auto it = entry.begin(); it != entry.end(); ++it)
+        if (it->first.Scalar() != "file" && it->first.Scalar() != "set")
+          impl.read_errors.error(impl.at(it->first), "unknown key '" + it->first.Scalar() +
+                                                         "' in an include; keys: file, set");
+      if (!file_node) {
+        impl.read_errors.error(impl.at(entry), "an include needs 'file'");
+        continue;
+      }
+      if (set && !set.IsMap()) {
+        impl.read_errors.error(impl.at(set), "an include's 'set' must be a map of node.param: value");
+        continue;
+      }
+    }
+    if (!file_node.IsScalar() || file_node.Scalar().empty()) {
+      impl.read_errors.error(impl.at(file_node), "an include is a graph file name, or a map with 'file' and 'set'");
+      continue;
+    }
+    std::filesystem::path path = file_node.Scalar();
+    if (path.is_relative()) path = (impl.folder() / path).lexically_normal();
+    const auto canonical = std::filesystem::weakly_canonical(path);
+    if (std::find(chain.begin(), chain.end(), canonical) != chain.end() || chain.size() >= kMaxIncludeDepth) {
+      impl.read_errors.error(impl.at(file_node), "'" + file_node.Scalar() + "' is already being included: an include cycle");
+      continue;
+    }
+    if (!std::filesystem::exists(path)) {
+      impl.read_errors.error(impl.at(file_node), "included graph file '" + path.string() + "' does not exist");
+      continue;
+    }
+    auto child = read_file(path, path.string());
+    chain.push_back(canonical);
+    read_includes(*child, chain);
+    chain.pop_back();
+    impl.read_errors.append(child->read_errors);  // the outermost file holds every reading error
+    impl.includes.push_back({std::move(child), set});
+  }
+}
+
+void read_includes(GraphSource::Impl& impl) {
+  std::vector<std::filesystem::path> chain;
+  if (!impl.file.empty()) chain.push_back(std::filesystem::weakly_canonical(impl.file));
+  read_includes(impl, chain);
+}
+
+void collect_plugin_paths(const GraphSource::Impl& impl, std::vector<std::filesystem::path>& paths) {
+  for (const auto& include : impl.includes) collect_plugin_paths(*include.source, paths);
+  if (!impl.root.IsMap()) return;
+  const YAML::Node& root = impl.root;
+  const YAML::Node list = root["plugin_paths"];
+  if (!list || !list.IsSequence()) return;
+  for (const auto& entry : list) {
+    if (!entry.IsScalar()) continue;
+    std::filesystem::path p = entry.Scalar();
+    p = p.is_absolute() ? p : (impl.folder() / p).lexically_normal();
+    if (std::find(paths.begin(), paths.end(), p) == paths.end()) paths.push_back(p);
+  }
+}
+
+}  // namespace
+
+GraphSource GraphSource::from_file(const std::filesystem::path& file) {
+  auto impl = read_file(file, file.string());
+  read_includes(*impl);
+  return GraphSource(std::move(impl));
 }
 
 GraphSource GraphSource::from_string(const std::string& yaml, const std::string& label) {
-  return GraphSource(parse(yaml, label, {}));
+  auto impl = parse(yaml, label, {});
+  read_includes(*impl);
+  return GraphSource(std::move(impl));
 }
 
 std::vector<std::filesystem::path> GraphSource::plugin_paths() const {
   std::vector<std::filesystem::path> paths;
-  if (!impl_->root.IsMap()) return paths;
-  const YAML::Node& root = impl_->root;  // const access: operator[] must not add the key
-  const YAML::Node list = root["plugin_paths"];
-  if (!list || !list.IsSequence()) return paths;
-  const std::filesystem::path base = impl_->file.empty() ? std::filesystem::current_path()
-                                                         : std::filesystem::absolute(impl_->file).parent_path();
-  for (const auto& entry : list) {
-    if (!entry.IsScalar()) continue;
-    std::filesystem::path p = entry.Scalar();
-    paths.push_back(p.is_absolute() ? p : (base / p).lexically_normal());
-  }
+  collect_plugin_paths(*impl_, paths);
   return paths;
 }
 

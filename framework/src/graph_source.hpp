@@ -1,6 +1,10 @@
 #pragma once
-// Private: the parsed YAML behind a GraphSource, and how YAML positions become locations.
+// Private: the parsed YAML behind a GraphSource, the graphs it includes, and how YAML positions
+// become locations.
 #include <yaml-cpp/yaml.h>
+
+#include <memory>
+#include <vector>
 
 #include "kestrel/runtime/graph.hpp"
 
@@ -10,13 +14,23 @@ struct GraphSource::Impl {
   std::string label;            // what error messages call the file
   std::filesystem::path file;   // empty for a string source
   YAML::Node root;
-  Diagnostics read_errors;
+  Diagnostics read_errors;      // reading, YAML syntax and include entries, of this file and those it includes
+
+  /// One entry of this file's `include:` list, already read (recursively).
+  struct Include {
+    std::unique_ptr<Impl> source;
+    YAML::Node set;  // the entry's `set:` map of node.param: value, or an invalid node
+  };
+  std::vector<Include> includes;
 
   SourceLocation at(const YAML::Mark& mark) const {
     if (mark.line < 0) return SourceLocation{label, 0, 0};
     return SourceLocation{label, mark.line + 1, mark.column + 1};
   }
   SourceLocation at(const YAML::Node& node) const { return at(node.Mark()); }
+
+  /// The folder relative paths in this file are resolved against.
+  std::filesystem::path folder() const;
 };
 
 }  // namespace kestrel
