@@ -3,7 +3,7 @@
 #include <kestrel/messages/detections.hpp>
 #include <kestrel/plugin.hpp>
 
-#include <cmath>
+#include "blackout_schedule.hpp"
 
 namespace kestrel::scenario {
 
@@ -24,34 +24,22 @@ class DetectionDropout final : public Node {
   }
 
   explicit DetectionDropout(NodeInit& init)
-      : frames_(init.param<int>("frames")), first_(init.param<double>("first_s")), period_(init.param<double>("period_s")) {}
+      : schedule_(init.param<int>("frames"), init.param<double>("first_s"), init.param<double>("period_s")) {}
 
   void process(Context& ctx) override {
     const auto in = ctx.get(kIn);
-    const double t = to_seconds(in->stamp);
-    if (t >= first_) {
-      const auto blackout = static_cast<long>(std::floor((t - first_) / period_));
-      if (blackout != current_) {
-        current_ = blackout;
-        dropped_in_blackout_ = 0;
-      }
-      if (dropped_in_blackout_ < frames_) {
-        ++dropped_in_blackout_;
-        msg::Detections empty;
-        empty.stamp = in->stamp;
-        empty.frame = in->frame;
-        ctx.publish(kOut, std::move(empty));
-        return;
-      }
+    if (schedule_.hide(to_seconds(in->stamp))) {
+      msg::Detections empty;
+      empty.stamp = in->stamp;
+      empty.frame = in->frame;
+      ctx.publish(kOut, std::move(empty));
+      return;
     }
     ctx.publish(kOut, in);
   }
 
  private:
-  int frames_;
-  double first_, period_;
-  long current_ = -1;
-  int dropped_in_blackout_ = 0;
+  BlackoutSchedule schedule_;
 };
 KESTREL_REGISTER_NODE(DetectionDropout)
 
