@@ -144,7 +144,8 @@ void BM_WholeChainHalfResolution(benchmark::State& state) {
   for (auto _ : state) {
     const auto& [l, r] = frames().pairs[i++ % frames().pairs.size()];
     const auto half = stereo::downscale(l, r, frames().calibration, 2);
-    const auto cloud = stereo::reproject(stereo::compute_disparity(*matcher, half.left, half.right), half.calibration, 0.5, 15.0);
+    const auto cloud =
+        stereo::reproject(stereo::compute_disparity(*matcher, half.left, half.right), half.calibration, 0.5, 15.0);
     const pcl::PointCloud<pcl::PointXYZ>::ConstPtr thin = voxel::downsample(*cloud, {});
     benchmark::DoNotOptimize(clustering::find_clusters(thin, {}).detections.size());
   }

@@ -19,7 +19,9 @@ class KalmanFilter final : public TrackFilter {
   explicit KalmanFilter(const Eigen::Vector3d& z) : kf_(ConstantAccelerationKalman::start(z, 1.0)) {}
   void predict(double dt) override { kf_.predict(dt, 1.0); }
   void update(const Eigen::Vector3d& z) override { kf_.update(z, 1.0); }
-  PredictedMeasurement predicted_measurement() const override { return {kf_.position(), kf_.innovation_covariance(1.0)}; }
+  PredictedMeasurement predicted_measurement() const override {
+    return {kf_.position(), kf_.innovation_covariance(1.0)};
+  }
   Eigen::VectorXd state() const override { return kf_.x; }
   Eigen::MatrixXd covariance() const override { return kf_.P; }
 

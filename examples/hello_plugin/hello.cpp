@@ -24,7 +24,8 @@ class Greeter final : public kestrel::Node {
   void tick(kestrel::Context& ctx) override {
     kestrel::msg::Detections out;
     out.stamp = ctx.now();
-    out.items.push_back({Eigen::Vector3d(step_ * static_cast<double>(ticks_++), 0.0, 5.0), Eigen::Vector3d::Zero(), 1, 1.0});
+    out.items.push_back(
+        {Eigen::Vector3d(step_ * static_cast<double>(ticks_++), 0.0, 5.0), Eigen::Vector3d::Zero(), 1, 1.0});
     ctx.publish(kOut, std::move(out));
   }
 
@@ -40,7 +41,8 @@ class DetectionCounter final : public kestrel::Node {
   static constexpr kestrel::Input<kestrel::msg::Detections> kIn{"detections"};
 
   static kestrel::NodeSpec spec() {
-    return kestrel::NodeSpec("detection_counter", "Counts detections into the report").input(kIn, "detections to count");
+    return kestrel::NodeSpec("detection_counter", "Counts detections into the report")
+        .input(kIn, "detections to count");
   }
   explicit DetectionCounter(kestrel::NodeInit&) {}
 

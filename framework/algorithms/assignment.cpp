@@ -55,7 +55,8 @@ std::vector<int> hungarian_square(const std::vector<std::vector<double>>& a) {
   }
   std::vector<int> row_to_col(static_cast<std::size_t>(n), -1);
   for (int j = 1; j <= n; ++j)
-    if (p[static_cast<std::size_t>(j)] > 0) row_to_col[static_cast<std::size_t>(p[static_cast<std::size_t>(j)] - 1)] = j - 1;
+    if (p[static_cast<std::size_t>(j)] > 0)
+      row_to_col[static_cast<std::size_t>(p[static_cast<std::size_t>(j)] - 1)] = j - 1;
   return row_to_col;
 }
 
@@ -82,10 +83,12 @@ Assignment solve_assignment(const Eigen::MatrixXd& cost, double gate) {
   const double forbidden = 2.0 * total_allowed + 1.0;
 
   const int n = std::max(rows, cols);
-  std::vector<std::vector<double>> square(static_cast<std::size_t>(n), std::vector<double>(static_cast<std::size_t>(n), 0.0));
+  std::vector<std::vector<double>> square(static_cast<std::size_t>(n),
+                                          std::vector<double>(static_cast<std::size_t>(n), 0.0));
   for (int r = 0; r < rows; ++r)
     for (int c = 0; c < cols; ++c)
-      square[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)] = allowed(r, c) ? cost(r, c) - lowest : forbidden;
+      square[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)] =
+          allowed(r, c) ? cost(r, c) - lowest : forbidden;
 
   const auto row_to_col = hungarian_square(square);
   for (int r = 0; r < rows; ++r) {

@@ -7,8 +7,8 @@
 
 namespace kestrel::algorithms {
 
-void ClearMotAccumulator::update(const std::vector<std::uint64_t>& objects, const std::vector<std::uint64_t>& hypotheses,
-                                 const Eigen::MatrixXd& distances) {
+void ClearMotAccumulator::update(const std::vector<std::uint64_t>& objects,
+                                 const std::vector<std::uint64_t>& hypotheses, const Eigen::MatrixXd& distances) {
   const auto n_obj = objects.size(), n_hyp = hypotheses.size();
   auto valid = [&](std::size_t i, std::size_t j) {
     return std::isfinite(distances(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)));
@@ -43,8 +43,9 @@ void ClearMotAccumulator::update(const std::vector<std::uint64_t>& objects, cons
   for (std::size_t a = 0; a < free_obj.size(); ++a)
     for (std::size_t b = 0; b < free_hyp.size(); ++b)
       cost(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) =
-          valid(free_obj[a], free_hyp[b]) ? distances(static_cast<Eigen::Index>(free_obj[a]), static_cast<Eigen::Index>(free_hyp[b]))
-                                          : kForbidden;
+          valid(free_obj[a], free_hyp[b])
+              ? distances(static_cast<Eigen::Index>(free_obj[a]), static_cast<Eigen::Index>(free_hyp[b]))
+              : kForbidden;
   const Assignment assignment = solve_assignment(cost);
   for (std::size_t a = 0; a < free_obj.size(); ++a) {
     const int b = assignment.row_to_col[a];
@@ -83,9 +84,12 @@ MotSummary ClearMotAccumulator::summary() const {
     std::uint64_t hit = 0;
     for (char f : flags) hit += f ? 1 : 0;
     const double ratio = static_cast<double>(hit) / static_cast<double>(flags.size());
-    if (ratio >= 0.8) ++s.mostly_tracked;
-    else if (ratio < 0.2) ++s.mostly_lost;
-    else ++s.partially_tracked;
+    if (ratio >= 0.8)
+      ++s.mostly_tracked;
+    else if (ratio < 0.2)
+      ++s.mostly_lost;
+    else
+      ++s.partially_tracked;
     // A fragmentation: a tracked span interrupted by a miss, between the first and last tracked frames.
     const auto first = std::find(flags.begin(), flags.end(), 1);
     const auto last = std::find(flags.rbegin(), flags.rend(), 1).base();
@@ -108,7 +112,8 @@ MotSummary ClearMotAccumulator::summary() const {
   s.idtp = static_cast<std::uint64_t>(std::llround(-identity.total_cost));
   s.idfn = s.objects - s.idtp;
   s.idfp = s.hypotheses - s.idtp;
-  s.idf1 = s.objects + s.hypotheses ? 2.0 * static_cast<double>(s.idtp) / static_cast<double>(s.objects + s.hypotheses) : 1.0;
+  s.idf1 = s.objects + s.hypotheses ? 2.0 * static_cast<double>(s.idtp) / static_cast<double>(s.objects + s.hypotheses)
+                                    : 1.0;
   s.idp = s.hypotheses ? static_cast<double>(s.idtp) / static_cast<double>(s.hypotheses) : 1.0;
   s.idr = s.objects ? static_cast<double>(s.idtp) / static_cast<double>(s.objects) : 1.0;
   return s;

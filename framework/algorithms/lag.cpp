@@ -9,7 +9,8 @@ Eigen::Vector3d interpolate(const std::vector<TimedPoint>& truth, double t) {
   if (truth.empty()) return Eigen::Vector3d::Zero();
   if (t <= truth.front().t) return truth.front().p;
   if (t >= truth.back().t) return truth.back().p;
-  const auto hi = std::upper_bound(truth.begin(), truth.end(), t, [](double v, const TimedPoint& s) { return v < s.t; });
+  const auto hi =
+      std::upper_bound(truth.begin(), truth.end(), t, [](double v, const TimedPoint& s) { return v < s.t; });
   const auto lo = hi - 1;
   const double f = (t - lo->t) / (hi->t - lo->t);
   return lo->p + f * (hi->p - lo->p);

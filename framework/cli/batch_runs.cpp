@@ -83,8 +83,8 @@ std::vector<BatchResult> run_batch(const std::vector<BatchJob>& jobs, int parall
 }
 
 std::map<std::string, double> report_metrics(const nlohmann::json& report) {
-  static const std::set<std::string> runtime_keys = {"kestrel_version", "graph", "outcome", "errors",
-                                                     "run_time_s", "wall_time_s", "stats"};
+  static const std::set<std::string> runtime_keys = {"kestrel_version", "graph",       "outcome", "errors",
+                                                     "run_time_s",      "wall_time_s", "stats"};
   std::map<std::string, double> out;
   if (!report.is_object()) return out;
   for (const auto& [key, value] : report.items())

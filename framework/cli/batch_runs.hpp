@@ -10,7 +10,7 @@
 namespace kestrel::cli {
 
 struct BatchJob {
-  std::vector<std::string> args;      ///< after "kestrel": run GRAPH --set ... --report DIR ...
+  std::vector<std::string> args;  ///< after "kestrel": run GRAPH --set ... --report DIR ...
   std::filesystem::path report_dir;
 };
 

@@ -58,7 +58,8 @@ int jobs_or_cores(int jobs) {
 
 std::vector<std::string> run_args(const std::string& graph, const std::vector<std::string>& sets, int seed,
                                   const std::optional<double>& duration, const std::filesystem::path& dir) {
-  std::vector<std::string> args = {"run", graph, "--seed", std::to_string(seed), "--report", dir.string(), "--no-progress"};
+  std::vector<std::string> args = {"run",      graph,        "--seed",       std::to_string(seed),
+                                   "--report", dir.string(), "--no-progress"};
   for (const auto& s : sets) {
     args.push_back("--set");
     args.push_back(s);
@@ -80,8 +81,8 @@ double t_quantile_975(int df) {
 
 // The metrics worth a column in a summary table (the CSV and JSON keep every metric).
 bool headline(const std::string& metric) {
-  static const std::set<std::string> names = {"mota", "motp_m", "idf1", "idsw", "fp", "fn", "precision", "recall",
-                                              "rmse_m", "lag_s", "switches"};
+  static const std::set<std::string> names = {"mota",      "motp_m", "idf1",   "idsw",  "fp",      "fn",
+                                              "precision", "recall", "rmse_m", "lag_s", "switches"};
   return names.count(metric.substr(metric.rfind('.') + 1)) > 0 || metric.find(".rmse_m.") != std::string::npos;
 }
 
@@ -124,7 +125,8 @@ int sweep_command(const SweepArgs& args) {
         jobs.push_back({run_args(args.graph, sets_for(grid[g]), seed, args.duration,
                                  dir / "runs" / fmt::format("{:03}_seed{}", g, seed)),
                         dir / "runs" / fmt::format("{:03}_seed{}", g, seed)});
-    std::fprintf(stderr, "[kestrel] sweep: %zu grid points x %d seeds = %zu runs\n", grid.size(), args.seeds, jobs.size());
+    std::fprintf(stderr, "[kestrel] sweep: %zu grid points x %d seeds = %zu runs\n", grid.size(), args.seeds,
+                 jobs.size());
     const auto results = run_batch(jobs, jobs_or_cores(args.jobs));
 
     // One CSV row per run, then a Markdown table of means over seeds.
@@ -192,7 +194,8 @@ int sweep_command(const SweepArgs& args) {
       const std::string last = m.substr(m.rfind('.') + 1);
       if (last != "mota" && last != "idf1" && last != "precision" && last != "recall" && last != "rmse_m") continue;
       plot::Panel p{m + " against " + params[0].key, params[0].key, m, {}};
-      plot::Series s{m, curves[m].first, curves[m].second, plot::Series::Style::line_and_points, plot::palette(panels.size()), 2};
+      plot::Series s{
+          m, curves[m].first, curves[m].second, plot::Series::Style::line_and_points, plot::palette(panels.size()), 2};
       p.series.push_back(s);
       panels.push_back(p);
     }
@@ -221,7 +224,8 @@ int ab_command(const AbArgs& args) {
     const std::filesystem::path dir = args.report_dir;
     std::vector<BatchJob> jobs;
     for (int seed = 1; seed <= args.seeds; ++seed)
-      for (const auto& [name, graph, sets] : {std::tuple{"A", args.graph_a, sets_a}, std::tuple{"B", args.graph_b, sets_b}})
+      for (const auto& [name, graph, sets] :
+           {std::tuple{"A", args.graph_a, sets_a}, std::tuple{"B", args.graph_b, sets_b}})
         jobs.push_back({run_args(graph, sets, seed, args.duration, dir / "runs" / fmt::format("{}_seed{}", name, seed)),
                         dir / "runs" / fmt::format("{}_seed{}", name, seed)});
     const auto results = run_batch(jobs, jobs_or_cores(args.jobs));
@@ -240,15 +244,17 @@ int ab_command(const AbArgs& args) {
       for (const auto& [k, va] : ma)
         if (auto it = mb.find(k); it != mb.end()) pairs[k].emplace_back(va, it->second);
     }
-    nlohmann::json json = {{"a", args.graph_a},         {"b", args.graph_b},     {"set", args.overrides},
-                           {"set_a", args.overrides_a}, {"set_b", args.overrides_b}, {"seeds", args.seeds},
+    nlohmann::json json = {{"a", args.graph_a},         {"b", args.graph_b},
+                           {"set", args.overrides},     {"set_a", args.overrides_a},
+                           {"set_b", args.overrides_b}, {"seeds", args.seeds},
                            {"failed_seeds", failed},    {"metrics", nlohmann::json::object()}};
     auto described = [](const std::string& graph, const std::vector<std::string>& sets) {
       return sets.empty() ? graph : fmt::format("{} with {}", graph, fmt::join(sets, ", "));
     };
     std::string md = fmt::format(
         "# A/B: {} (A) against {} (B)\n\n{} seeds, paired by seed{}. Difference = B - A, with its 95% confidence "
-        "interval (Student's t).\n\n| metric | mean A | mean B | B - A | 95% CI | better |\n|---|---:|---:|---:|---|---|\n",
+        "interval (Student's t).\n\n| metric | mean A | mean B | B - A | 95% CI | better "
+        "|\n|---|---:|---:|---:|---|---|\n",
         described(args.graph_a, args.overrides_a), described(args.graph_b, args.overrides_b), args.seeds,
         args.overrides.empty() ? "" : fmt::format(", both with {}", fmt::join(args.overrides, ", ")));
     for (const auto& [metric, values] : pairs) {
@@ -272,8 +278,10 @@ int ab_command(const AbArgs& args) {
       std::string better = "no significant difference";
       if (lo > 0 || hi < 0) better = (md_ > 0) == (direction > 0) ? "B" : "A";
       if (sd == 0 && md_ == 0) better = "equal";
-      json["metrics"][metric] = {{"mean_a", ma}, {"mean_b", mb}, {"difference", md_}, {"ci95", {lo, hi}}, {"better", better}};
-      md += fmt::format("| {} | {:.4g} | {:.4g} | {:+.4g} | [{:+.4g}, {:+.4g}] | {} |\n", metric, ma, mb, md_, lo, hi, better);
+      json["metrics"][metric] = {
+          {"mean_a", ma}, {"mean_b", mb}, {"difference", md_}, {"ci95", {lo, hi}}, {"better", better}};
+      md += fmt::format("| {} | {:.4g} | {:.4g} | {:+.4g} | [{:+.4g}, {:+.4g}] | {} |\n", metric, ma, mb, md_, lo, hi,
+                        better);
     }
     if (failed) md += fmt::format("\n{} seed(s) left out: a run failed (see runs/*/run.log).\n", failed);
     std::filesystem::create_directories(dir);

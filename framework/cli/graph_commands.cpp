@@ -1,13 +1,13 @@
 // run, validate and dot: the commands that load a graph.
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
-#include <unistd.h>
 
 #include "commands.hpp"
 #include "kestrel/runtime/graph.hpp"
@@ -115,8 +115,8 @@ int run_command(const RunArgs& args) {
   std::uint64_t errors = 0;
   for (const auto& n : result.nodes) errors += n.errors;
   if (errors > 0) spdlog::warn("{} message(s) dropped by node errors (on_error: skip)", errors);
-  spdlog::info("run {} at t = {:.2f} s ({:.2f} s wall)", result.outcome == RunOutcome::stopped ? "stopped" : "completed",
-               result.sim_time_s, result.wall_time_s);
+  spdlog::info("run {} at t = {:.2f} s ({:.2f} s wall)",
+               result.outcome == RunOutcome::stopped ? "stopped" : "completed", result.sim_time_s, result.wall_time_s);
   return kOk;
 }
 

@@ -1,14 +1,16 @@
 // kestrel: run, validate, inspect and draw dataflow graphs of plugins.
-#include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
+
+#include <CLI/CLI.hpp>
 
 #include "commands.hpp"
 #include "kestrel/version.hpp"
 
 int main(int argc, char** argv) {
   using namespace kestrel::cli;
-  CLI::App app{"kestrel: perception-and-control dataflow runtime.\n"
-               "Exit codes: 0 ok, 1 run failed, 2 bad command line, 3 invalid graph, 4 not found / plugin refused."};
+  CLI::App app{
+      "kestrel: perception-and-control dataflow runtime.\n"
+      "Exit codes: 0 ok, 1 run failed, 2 bad command line, 3 invalid graph, 4 not found / plugin refused."};
   app.set_version_flag("--version", std::string("kestrel ") + KESTREL_VERSION_STRING);
   app.require_subcommand(1);
   std::string log_level = "info";
@@ -22,7 +24,9 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--duration", run.duration_s, "run length in seconds (sim time for lockstep)");
   run_cmd->add_option("--seed", run.seed, "random seed (overrides the graph's)");
   run_cmd->add_option("--report", run.report_dir, "write DIR/report.json and DIR/report.md");
-  run_cmd->add_option("--executor", run.executor, "run with this executor instead of the graph's (realtime uses the wall clock)")
+  run_cmd
+      ->add_option("--executor", run.executor,
+                   "run with this executor instead of the graph's (realtime uses the wall clock)")
       ->check(CLI::IsMember({"lockstep", "realtime"}));
   run_cmd->add_flag("--stats", run.stats, "print per-node and per-connection statistics at the end");
   run_cmd->add_flag("!--no-progress", run.progress, "no status line on the terminal");
@@ -41,10 +45,13 @@ int main(int argc, char** argv) {
 
   MotArgs mot;
   auto* mot_cmd = app.add_subcommand("mot", "CLEAR-MOT and IDF1 of MOTChallenge CSV files (as py-motmetrics)");
-  mot_cmd->add_option("ground_truth", mot.ground_truth, "ground-truth file: frame,id,bb_left,bb_top,bb_width,bb_height,conf,x,y,z")
+  mot_cmd
+      ->add_option("ground_truth", mot.ground_truth,
+                   "ground-truth file: frame,id,bb_left,bb_top,bb_width,bb_height,conf,x,y,z")
       ->required();
   mot_cmd->add_option("test", mot.test, "tracker output in the same format")->required();
-  mot_cmd->add_option("--iou", mot.iou, "match 2D boxes whose IoU is at least this (default 0.5)")->check(CLI::Range(0.0, 1.0));
+  mot_cmd->add_option("--iou", mot.iou, "match 2D boxes whose IoU is at least this (default 0.5)")
+      ->check(CLI::Range(0.0, 1.0));
   mot_cmd->add_option("--dist", mot.distance, "match 3D points (x,y,z columns) within this distance instead")
       ->check(CLI::PositiveNumber);
   mot_cmd->add_option("--json", mot.json, "also write the metrics to this JSON file");
@@ -68,7 +75,8 @@ int main(int argc, char** argv) {
   sweep_cmd->add_option("--jobs", sweep.jobs, "runs at once (default: one per core)");
 
   AbArgs ab;
-  auto* ab_cmd = app.add_subcommand("ab", "Compare two graphs on the same seeds: paired differences with 95% intervals");
+  auto* ab_cmd =
+      app.add_subcommand("ab", "Compare two graphs on the same seeds: paired differences with 95% intervals");
   ab_cmd->add_option("a", ab.graph_a, "graph A")->required();
   ab_cmd->add_option("b", ab.graph_b, "graph B")->required();
   ab_cmd->add_option("--set", ab.overrides, "override applied to both (repeatable)");

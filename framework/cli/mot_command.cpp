@@ -105,10 +105,20 @@ int mot_command(const MotArgs& args) {
                 static_cast<unsigned long long>(s.fragmentations), static_cast<unsigned long long>(s.objects));
     std::printf("MOTP is the mean %s of matches.\n", by_iou ? "1 - IoU" : "distance");
     if (!args.json.empty()) {
-      const nlohmann::json j = {{"frames", s.frames}, {"mota", s.mota}, {"motp", s.motp}, {"idf1", s.idf1},
-                                {"idp", s.idp},       {"idr", s.idr},   {"fp", s.fp},     {"fn", s.fn},
-                                {"idsw", s.idsw},     {"mt", s.mostly_tracked}, {"pt", s.partially_tracked},
-                                {"ml", s.mostly_lost}, {"frag", s.fragmentations}, {"num_objects", s.objects},
+      const nlohmann::json j = {{"frames", s.frames},
+                                {"mota", s.mota},
+                                {"motp", s.motp},
+                                {"idf1", s.idf1},
+                                {"idp", s.idp},
+                                {"idr", s.idr},
+                                {"fp", s.fp},
+                                {"fn", s.fn},
+                                {"idsw", s.idsw},
+                                {"mt", s.mostly_tracked},
+                                {"pt", s.partially_tracked},
+                                {"ml", s.mostly_lost},
+                                {"frag", s.fragmentations},
+                                {"num_objects", s.objects},
                                 {"matches", s.matches}};
       std::ofstream(args.json) << j.dump(2) << '\n';
     }

@@ -52,8 +52,8 @@ void inspect_node(const NodeType& type, const Registry& registry) {
   if (spec.inputs().empty()) std::printf("    none (a source)\n");
   for (const auto& p : spec.inputs())
     std::printf("    %-22s %-26s %s%s\n      %s\n", p.name.c_str(), p.type.c_str(),
-                p.trigger == Trigger::on_message ? "triggers" : "latest value",
-                p.optional ? ", optional" : "", p.description.c_str());
+                p.trigger == Trigger::on_message ? "triggers" : "latest value", p.optional ? ", optional" : "",
+                p.description.c_str());
   std::printf("\nOutputs:\n");
   if (spec.outputs().empty()) std::printf("    none (a sink)\n");
   for (const auto& p : spec.outputs())
@@ -77,13 +77,15 @@ int plugins_command() {
     for (const auto& type : plugin.node_types)
       std::printf("    node       %-24s %s\n", type.c_str(), registry.find_node(type)->spec.summary().c_str());
     for (const auto& key : plugin.components)
-      std::printf("    component  %-24s %s\n", key.c_str(), registry.components().find(key)->second.spec.summary().c_str());
+      std::printf("    component  %-24s %s\n", key.c_str(),
+                  registry.components().find(key)->second.spec.summary().c_str());
     for (const auto& m : plugin.messages)
       std::printf("    message    %-24s %s\n", m.c_str(), registry.find_message(m)->info.description.c_str());
   }
   std::printf("framework message types:\n");
   for (const auto& [name, m] : registry.messages())
-    if (m.plugin.empty() && name != "*") std::printf("    message    %-24s %s\n", name.c_str(), m.info.description.c_str());
+    if (m.plugin.empty() && name != "*")
+      std::printf("    message    %-24s %s\n", name.c_str(), m.info.description.c_str());
   if (host->plugins().empty()) {
     std::string path;
     for (const auto& dir : PluginHost::search_path()) {

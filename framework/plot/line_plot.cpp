@@ -42,8 +42,8 @@ std::string tick_label(double v, double step) {
   return fmt::format("{:.{}f}", std::abs(v) < step * 1e-6 ? 0.0 : v, decimals);
 }
 
-void put_text(cv::Mat& img, const std::string& text, cv::Point at, double scale, cv::Scalar color,
-              bool centred = false, bool right = false) {
+void put_text(cv::Mat& img, const std::string& text, cv::Point at, double scale, cv::Scalar color, bool centred = false,
+              bool right = false) {
   int baseline = 0;
   const cv::Size size = cv::getTextSize(text, kFont, scale, 1, &baseline);
   if (centred) at.x -= size.width / 2;
@@ -126,8 +126,8 @@ void draw_panel(cv::Mat& img, const Panel& panel, cv::Rect area) {
   int labelled = 0;
   for (const auto& s : panel.series) labelled += s.label.empty() ? 0 : 1;
   if (labelled > 0)
-    cv::rectangle(img, cv::Rect(plot.x + plot.width - 196, plot.y + 4, 190, 18 * labelled + 6), cv::Scalar(255, 255, 255),
-                  cv::FILLED);
+    cv::rectangle(img, cv::Rect(plot.x + plot.width - 196, plot.y + 4, 190, 18 * labelled + 6),
+                  cv::Scalar(255, 255, 255), cv::FILLED);
   int y = plot.y + 18;
   for (const auto& s : panel.series) {
     if (s.label.empty()) continue;
@@ -141,7 +141,7 @@ void draw_panel(cv::Mat& img, const Panel& panel, cv::Rect area) {
 }  // namespace
 
 Color palette(std::size_t index) {
-  static const Color colors[] = {{31, 119, 180}, {255, 127, 14}, {44, 160, 44},  {214, 39, 40},  {148, 103, 189},
+  static const Color colors[] = {{31, 119, 180}, {255, 127, 14},  {44, 160, 44},   {214, 39, 40},  {148, 103, 189},
                                  {140, 86, 75},  {227, 119, 194}, {127, 127, 127}, {188, 189, 34}, {23, 190, 207}};
   return colors[index % (sizeof colors / sizeof colors[0])];
 }

@@ -12,19 +12,19 @@ std::string format_stats(const RunResult& result) {
   }
   for (const auto& c : result.connections) label_width = std::max(label_width, c.label.size() + (c.delayed ? 10 : 0));
 
-  std::string out = fmt::format("{:<{}}  {:<{}}  {:>9}  {:>9}  {:>7}  {:>6}  {:>10}  {:>10}  {:>10}\n", "node", id_width,
-                                "type", type_width, "in", "out", "drops", "errors", "p50 µs", "p99 µs", "max µs");
+  std::string out =
+      fmt::format("{:<{}}  {:<{}}  {:>9}  {:>9}  {:>7}  {:>6}  {:>10}  {:>10}  {:>10}\n", "node", id_width, "type",
+                  type_width, "in", "out", "drops", "errors", "p50 µs", "p99 µs", "max µs");
   for (const auto& n : result.nodes) {
     out += fmt::format("{:<{}}  {:<{}}  {:>9}  {:>9}  {:>7}  {:>6}  {:>10.1f}  {:>10.1f}  {:>10.1f}\n", n.id, id_width,
                        n.type, type_width, n.messages_in, n.messages_out, n.drops, n.errors,
-                       n.processing.quantile(0.5) / 1e3, n.processing.quantile(0.99) / 1e3,
-                       n.processing.max() / 1e3);
+                       n.processing.quantile(0.5) / 1e3, n.processing.quantile(0.99) / 1e3, n.processing.max() / 1e3);
   }
   out += fmt::format("\n{:<{}}  {:<9}  {:>9}  {:>7}  {:>10}\n", "connection", label_width, "policy", "delivered",
                      "drops", "high-water");
   for (const auto& c : result.connections) {
-    out += fmt::format("{:<{}}  {:<9}  {:>9}  {:>7}  {:>10}\n", c.label + (c.delayed ? " (delayed)" : ""),
-                       label_width, c.policy, c.delivered, c.drops, c.high_water);
+    out += fmt::format("{:<{}}  {:<9}  {:>9}  {:>7}  {:>10}\n", c.label + (c.delayed ? " (delayed)" : ""), label_width,
+                       c.policy, c.delivered, c.drops, c.high_water);
   }
   return out;
 }

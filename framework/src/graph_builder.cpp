@@ -7,9 +7,9 @@
 #include <cctype>
 #include <cmath>
 #include <functional>
-#include <sstream>
 #include <map>
 #include <set>
+#include <sstream>
 
 #include "graph_source.hpp"
 
@@ -17,9 +17,12 @@ namespace kestrel {
 
 std::string QueuePolicy::str() const {
   switch (kind) {
-    case Kind::latest: return "latest";
-    case Kind::fifo: return fmt::format("fifo {}", capacity);
-    case Kind::block: return fmt::format("block {}", capacity);
+    case Kind::latest:
+      return "latest";
+    case Kind::fifo:
+      return fmt::format("fifo {}", capacity);
+    case Kind::block:
+      return fmt::format("block {}", capacity);
   }
   return "?";
 }
@@ -48,9 +51,9 @@ std::optional<QueuePolicy> QueuePolicy::parse(const std::string& text) {
 
 namespace {
 
-const std::vector<std::string> kTopLevelKeys = {"kestrel", "name",     "description", "plugin_paths",
-                                                "include", "executor", "clock",       "seed",
-                                                "duration", "on_error", "nodes",      "connections"};
+const std::vector<std::string> kTopLevelKeys = {"kestrel",  "name",     "description", "plugin_paths",
+                                                "include",  "executor", "clock",       "seed",
+                                                "duration", "on_error", "nodes",       "connections"};
 const std::vector<std::string> kNodeKeys = {"id", "type", "params", "description"};
 const std::vector<std::string> kConnectionKeys = {"from", "to", "policy", "delayed"};
 const char* kPolicyForms = "expected 'latest', 'fifo N' or 'block N'";
@@ -121,7 +124,7 @@ class Builder {
   std::optional<Endpoint> endpoint(const YAML::Node& n, bool output);
 
   const GraphSource::Impl& src_;
-  const GraphSource::Impl* cur_;  // the file being read: the graph or one it includes
+  const GraphSource::Impl* cur_;                 // the file being read: the graph or one it includes
   std::vector<const GraphSource::Impl*> files_;  // included files depth-first, then the graph itself
   const Registry& registry_;
   Diagnostics diag_;
@@ -129,7 +132,7 @@ class Builder {
   QueuePolicy default_policy_;
   std::map<std::string, int> node_index_;
   std::map<std::string, std::map<std::string, Override>> overrides_;  // node id -> param -> value
-  std::vector<bool> node_ok_;  // type known (ports can be checked)
+  std::vector<bool> node_ok_;                                         // type known (ports can be checked)
   // Inputs named by a connection that failed for another reason: not also "not connected".
   std::set<std::pair<int, int>> attempted_inputs_;
   std::set<int> nodes_with_broken_inputs_;
@@ -252,7 +255,8 @@ void Builder::read_header() {
     error(root["clock"], "the realtime executor runs on the wall clock; use 'clock: wall' or the lockstep executor");
   if (const YAML::Node v = root["seed"]) {
     std::uint64_t seed = 0;
-    if (!v.IsScalar() || !YAML::convert<std::uint64_t>::decode(v, seed) || (!v.Scalar().empty() && v.Scalar()[0] == '-'))
+    if (!v.IsScalar() || !YAML::convert<std::uint64_t>::decode(v, seed) ||
+        (!v.Scalar().empty() && v.Scalar()[0] == '-'))
       error(v, "seed must be a non-negative integer");
     else
       g_.seed = seed;
@@ -272,7 +276,8 @@ void Builder::read_header() {
       else if (*s == "skip")
         g_.on_error = ErrorPolicy::skip;
       else
-        error(v, fmt::format("unknown on_error policy '{}'{}; policies: stop, skip", *s, did_you_mean(*s, {"stop", "skip"})));
+        error(v, fmt::format("unknown on_error policy '{}'{}; policies: stop, skip", *s,
+                             did_you_mean(*s, {"stop", "skip"})));
     }
   }
 }
@@ -336,8 +341,8 @@ std::optional<ParamValue> Builder::check_value(const YAML::Node& value, const So
     case ParamType::number: {
       double d = 0;
       bool is_bool = false;
-      if (!value.IsScalar() || YAML::convert<bool>::decode(value, is_bool) || !YAML::convert<double>::decode(value, d) ||
-          !std::isfinite(d))
+      if (!value.IsScalar() || YAML::convert<bool>::decode(value, is_bool) ||
+          !YAML::convert<double>::decode(value, d) || !std::isfinite(d))
         return wrong_type("a number");
       if (!in_range(d, spec, where, owner)) return std::nullopt;
       return ParamValue(d);
@@ -415,8 +420,8 @@ std::optional<Params> Builder::check_params(const YAML::Node& params, const std:
     return nullptr;
   };
   auto unknown = [&](const SourceLocation& where, const std::string& name) {
-    diag_.error(where, fmt::format("{}: unknown parameter '{}'{}; parameters: {}", owner, name, did_you_mean(name, names),
-                                   names.empty() ? "none" : join(names)));
+    diag_.error(where, fmt::format("{}: unknown parameter '{}'{}; parameters: {}", owner, name,
+                                   did_you_mean(name, names), names.empty() ? "none" : join(names)));
   };
 
   bool ok = true;
@@ -459,8 +464,8 @@ std::optional<Params> Builder::check_params(const YAML::Node& params, const std:
       if (spec.default_value)
         result.set(spec.name, *spec.default_value);
       else {
-        diag_.error(owner_where, fmt::format("{}: required parameter '{}' ({}) is not set", owner, spec.name,
-                                             to_string(spec.type)));
+        diag_.error(owner_where,
+                    fmt::format("{}: required parameter '{}' ({}) is not set", owner, spec.name, to_string(spec.type)));
         ok = false;
       }
       continue;
@@ -545,8 +550,9 @@ void Builder::read_nodes() {
     }
     config.type = registry_.find_node(*type_text);
     if (!config.type) {
-      error(type, fmt::format("unknown node type '{}'{}; known types: {}", *type_text, did_you_mean(*type_text, known_types),
-                              known_types.empty() ? "none (no plugin loaded)" : join(known_types)));
+      error(type,
+            fmt::format("unknown node type '{}'{}; known types: {}", *type_text, did_you_mean(*type_text, known_types),
+                        known_types.empty() ? "none (no plugin loaded)" : join(known_types)));
     } else {
       const std::string owner = fmt::format("node '{}' ({})", config.id, config.type->spec.type());
       const auto ov = overrides_.find(config.id);
@@ -649,8 +655,10 @@ void Builder::read_connections() {
     auto target = endpoint(to, false);
     if (target) attempted_inputs_.insert({target->node, target->port});
     if (!source || !target || !ok) continue;
-    const auto& out_port = g_.nodes[static_cast<std::size_t>(source->node)].type->spec.outputs()[static_cast<std::size_t>(source->port)];
-    const auto& in_port = g_.nodes[static_cast<std::size_t>(target->node)].type->spec.inputs()[static_cast<std::size_t>(target->port)];
+    const auto& out_port =
+        g_.nodes[static_cast<std::size_t>(source->node)].type->spec.outputs()[static_cast<std::size_t>(source->port)];
+    const auto& in_port =
+        g_.nodes[static_cast<std::size_t>(target->node)].type->spec.inputs()[static_cast<std::size_t>(target->port)];
     config.label = from.Scalar() + " -> " + to.Scalar();
     if (in_port.type != "*" && in_port.type != out_port.type) {
       error(c, fmt::format("port type mismatch: {} is {}, but {} expects {}", from.Scalar(), out_port.type, to.Scalar(),
@@ -681,8 +689,8 @@ void Builder::check_inputs_connected() {
     for (std::size_t p = 0; p < inputs.size(); ++p) {
       const std::pair<int, int> key{static_cast<int>(i), static_cast<int>(p)};
       if (inputs[p].optional || connected.count(key) || attempted_inputs_.count(key)) continue;
-      diag_.error(g_.nodes[i].where, fmt::format("input '{}.{}' ({}) is not connected", g_.nodes[i].id, inputs[p].name,
-                                                 inputs[p].type));
+      diag_.error(g_.nodes[i].where,
+                  fmt::format("input '{}.{}' ({}) is not connected", g_.nodes[i].id, inputs[p].name, inputs[p].type));
     }
   }
 }
@@ -727,7 +735,8 @@ void Builder::order_nodes() {
   std::reverse(cycle.begin(), cycle.end());
   std::vector<std::string> labels;
   for (const auto* c : cycle) labels.push_back(c->label);
-  const auto first = *std::min_element(cycle.begin(), cycle.end(), [](auto* a, auto* b) { return a->where.line < b->where.line; });
+  const auto first =
+      *std::min_element(cycle.begin(), cycle.end(), [](auto* a, auto* b) { return a->where.line < b->where.line; });
   diag_.error(first->where, fmt::format("cycle not broken by a delayed connection: {}; mark one of these connections "
                                         "'delayed: true'",
                                         fmt::join(labels, ", ")));
@@ -779,7 +788,8 @@ BuildResult Builder::build(const std::vector<std::string>& overrides) {
 
 }  // namespace
 
-BuildResult build_graph(const GraphSource& source, const Registry& registry, const std::vector<std::string>& overrides) {
+BuildResult build_graph(const GraphSource& source, const Registry& registry,
+                        const std::vector<std::string>& overrides) {
   Builder builder(source.impl(), registry);
   BuildResult result;
   try {

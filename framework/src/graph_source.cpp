@@ -1,8 +1,8 @@
+#include "graph_source.hpp"
+
 #include <algorithm>
 #include <fstream>
 #include <sstream>
-
-#include "graph_source.hpp"
 
 namespace kestrel {
 
@@ -67,8 +67,8 @@ void read_includes(GraphSource::Impl& impl, std::vector<std::filesystem::path>& 
     if (entry.IsMap()) {
       for (auto it = entry.begin(); it != entry.end(); ++it)
         if (it->first.Scalar() != "file" && it->first.Scalar() != "set")
-          impl.read_errors.error(impl.at(it->first), "unknown key '" + it->first.Scalar() +
-                                                         "' in an include; keys: file, set");
+          impl.read_errors.error(impl.at(it->first),
+                                 "unknown key '" + it->first.Scalar() + "' in an include; keys: file, set");
       if (!file_node) {
         impl.read_errors.error(impl.at(entry), "an include needs 'file'");
         continue;
@@ -86,7 +86,8 @@ void read_includes(GraphSource::Impl& impl, std::vector<std::filesystem::path>& 
     if (path.is_relative()) path = (impl.folder() / path).lexically_normal();
     const auto canonical = std::filesystem::weakly_canonical(path);
     if (std::find(chain.begin(), chain.end(), canonical) != chain.end() || chain.size() >= kMaxIncludeDepth) {
-      impl.read_errors.error(impl.at(file_node), "'" + file_node.Scalar() + "' is already being included: an include cycle");
+      impl.read_errors.error(impl.at(file_node),
+                             "'" + file_node.Scalar() + "' is already being included: an include cycle");
       continue;
     }
     if (!std::filesystem::exists(path)) {

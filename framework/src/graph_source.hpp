@@ -11,10 +11,10 @@
 namespace kestrel {
 
 struct GraphSource::Impl {
-  std::string label;            // what error messages call the file
-  std::filesystem::path file;   // empty for a string source
+  std::string label;           // what error messages call the file
+  std::filesystem::path file;  // empty for a string source
   YAML::Node root;
-  Diagnostics read_errors;      // reading, YAML syntax and include entries, of this file and those it includes
+  Diagnostics read_errors;  // reading, YAML syntax and include entries, of this file and those it includes
 
   /// One entry of this file's `include:` list, already read (recursively).
   struct Include {

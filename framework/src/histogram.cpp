@@ -38,8 +38,7 @@ std::int64_t DurationHistogram::quantile(double q) const {
   std::uint64_t seen = 0;
   for (int b = 0; b < kBuckets; ++b) {
     seen += buckets_[static_cast<std::size_t>(b)];
-    if (seen >= std::max<std::uint64_t>(rank, 1))
-      return std::min(static_cast<std::int64_t>(upper_edge(b)), max_);
+    if (seen >= std::max<std::uint64_t>(rank, 1)) return std::min(static_cast<std::int64_t>(upper_edge(b)), max_);
   }
   return max_;
 }

@@ -5,9 +5,7 @@
 
 namespace kestrel {
 
-void Node::process(Context&) {
-  throw Error("this node type has a triggering input but does not implement process()");
-}
+void Node::process(Context&) { throw Error("this node type has a triggering input but does not implement process()"); }
 void Node::tick(Context&) {}
 void Node::finish(Context&) {}
 
@@ -21,14 +19,13 @@ void NodeInit::set_period(Duration period) {
   tick_interval_ns_ = static_cast<double>(period.count());
 }
 
-std::shared_ptr<void> NodeInit::make_component_erased(const std::string& param_name,
-                                                      std::string_view kind) const {
+std::shared_ptr<void> NodeInit::make_component_erased(const std::string& param_name, std::string_view kind) const {
   const ParamSpec* spec = spec_.find_param(param_name);
   if (!spec || spec->type != ParamType::component)
     throw Error("node '" + id_ + "': '" + param_name + "' is not a component parameter in spec()");
   if (spec->component_kind != kind)
-    throw Error("node '" + id_ + "': parameter '" + param_name + "' holds a " + spec->component_kind +
-                ", not a " + std::string(kind));
+    throw Error("node '" + id_ + "': parameter '" + param_name + "' holds a " + spec->component_kind + ", not a " +
+                std::string(kind));
   const auto config = params_.get<ComponentConfig>(param_name);
   const ComponentType* type = registry_.find_component(kind, config.type);
   if (!type) throw Error("node '" + id_ + "': no " + std::string(kind) + " named '" + config.type + "'");
@@ -47,8 +44,7 @@ std::string_view Context::trigger() const {
   return rt_.inputs[static_cast<std::size_t>(rt_.current_trigger)].spec->name;
 }
 
-void Context::publish_erased(std::string_view output, std::shared_ptr<const void> payload,
-                             std::string_view type) {
+void Context::publish_erased(std::string_view output, std::shared_ptr<const void> payload, std::string_view type) {
   rt_.publish(output, std::move(payload), type);
 }
 
@@ -77,9 +73,15 @@ bool NodeRuntime::call(Call what) {
   bool ok = true;
   try {
     switch (what) {
-      case Call::process: node->process(ctx); break;
-      case Call::tick: node->tick(ctx); break;
-      case Call::finish: node->finish(ctx); break;
+      case Call::process:
+        node->process(ctx);
+        break;
+      case Call::tick:
+        node->tick(ctx);
+        break;
+      case Call::finish:
+        node->finish(ctx);
+        break;
     }
   } catch (const std::exception& e) {
     ok = false;
@@ -89,7 +91,8 @@ bool NodeRuntime::call(Call what) {
     run->node_error(*this, "unknown exception");
   }
   if (what != Call::finish) {
-    processing.record(std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start).count());
+    processing.record(
+        std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start).count());
     calls.fetch_add(1, std::memory_order_relaxed);
   }
   return ok;
@@ -108,8 +111,7 @@ void NodeRuntime::publish(std::string_view output, std::shared_ptr<const void> p
   for (Edge* edge : outputs[static_cast<std::size_t>(index)]) run->executor->deliver(*edge, envelope);
 }
 
-RunState::RunState(const GraphConfig& g, const Registry& r, const RunOptions& o)
-    : graph(g), registry(r), options(o) {}
+RunState::RunState(const GraphConfig& g, const Registry& r, const RunOptions& o) : graph(g), registry(r), options(o) {}
 
 std::uint64_t node_seed(std::uint64_t run_seed, const std::string& node_id) {
   // FNV-1a over the id, mixed with the run seed by splitmix64: the same on every platform.
@@ -154,8 +156,8 @@ bool RunState::instantiate() {
 
   bool ok = true;
   for (auto& rt : nodes) {
-    NodeInit init(rt->id(), rt->config->type->spec, rt->config->params, registry,
-                  node_seed(seed, rt->id()), *rt->logger);
+    NodeInit init(rt->id(), rt->config->type->spec, rt->config->params, registry, node_seed(seed, rt->id()),
+                  *rt->logger);
     try {
       rt->node = rt->config->type->factory(init);
       rt->tick_interval_ns = init.tick_interval_ns();
@@ -168,8 +170,7 @@ bool RunState::instantiate() {
 }
 
 bool RunState::stopping() const {
-  return stop_requested.load() || failed.load() ||
-         (options.stop_flag != nullptr && options.stop_flag->load());
+  return stop_requested.load() || failed.load() || (options.stop_flag != nullptr && options.stop_flag->load());
 }
 
 void RunState::node_error(NodeRuntime& node, const std::string& what) {

@@ -8,12 +8,18 @@ namespace kestrel {
 
 const char* to_string(ParamType type) {
   switch (type) {
-    case ParamType::boolean: return "bool";
-    case ParamType::integer: return "int";
-    case ParamType::number: return "float";
-    case ParamType::string: return "string";
-    case ParamType::number_list: return "float list";
-    case ParamType::component: return "component";
+    case ParamType::boolean:
+      return "bool";
+    case ParamType::integer:
+      return "int";
+    case ParamType::number:
+      return "float";
+    case ParamType::string:
+      return "string";
+    case ParamType::number_list:
+      return "float list";
+    case ParamType::component:
+      return "component";
   }
   return "?";
 }

@@ -77,9 +77,13 @@ bool PluginHost::load(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
     std::array<char, 4> magic{};
     if (!in) return refuse(file, fmt::format("cannot read plugin {}", name));
-    if (!in.read(magic.data(), magic.size()) || std::memcmp(magic.data(), "\x7f" "ELF", 4) != 0)
+    if (!in.read(magic.data(), magic.size()) || std::memcmp(magic.data(),
+                                                            "\x7f"
+                                                            "ELF",
+                                                            4) != 0)
       return refuse(file, fmt::format("{} is not a shared library (no ELF header); is it a corrupt or truncated "
-                                      "plugin?", name));
+                                      "plugin?",
+                                      name));
   }
   // RTLD_NOW: an unresolved symbol is reported here, not as a crash later. RTLD_LOCAL: plugins
   // cannot interpose on each other. RTLD_NODELETE: the code stays mapped for the life of the
@@ -118,7 +122,8 @@ bool PluginHost::load(const fs::path& file) {
   if (d->register_plugin(&scratch, error.data(), error.size()) != 0)
     return refuse(file, fmt::format("plugin {} failed to register: {}", name, error.data()));
 
-  PluginInfo info{file, d->name ? d->name : "", d->version ? d->version : "", d->description ? d->description : "", {}, {}, {}};
+  PluginInfo info{
+      file, d->name ? d->name : "", d->version ? d->version : "", d->description ? d->description : "", {}, {}, {}};
   for (const auto& [type, _] : scratch.nodes()) {
     if (const auto* existing = registry_.find_node(type))
       return refuse(file, fmt::format("plugin {} registers node type '{}', which {} already provides", name, type,

@@ -8,8 +8,10 @@
 namespace kestrel::detail {
 
 Progress::Progress(const RunState& run, bool requested)
-    : run_(run), enabled_(requested && isatty(STDERR_FILENO) == 1),
-      start_(std::chrono::steady_clock::now()), last_(start_) {}
+    : run_(run),
+      enabled_(requested && isatty(STDERR_FILENO) == 1),
+      start_(std::chrono::steady_clock::now()),
+      last_(start_) {}
 
 std::uint64_t Progress::source_frames() const {
   std::uint64_t frames = 0;

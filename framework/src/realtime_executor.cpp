@@ -147,8 +147,7 @@ void RealtimeExecutor::wake_all() {
 }
 
 Time RealtimeExecutor::run(Progress& progress) {
-  const std::optional<double> duration =
-      run_.options.duration_s ? run_.options.duration_s : run_.graph.duration_s;
+  const std::optional<double> duration = run_.options.duration_s ? run_.options.duration_s : run_.graph.duration_s;
   for (const auto& edge : run_.edges)
     if (!edge->config->delayed) ++edge->to->upstream_alive;
 

@@ -29,16 +29,16 @@ Registry::Registry() {
 void Registry::add_node(NodeSpec spec, NodeFactory factory) {
   const std::string type = spec.type();
   if (auto it = nodes_.find(type); it != nodes_.end())
-    throw Error("node type '" + type + "' is registered twice: by " + origin(it->second.plugin) +
-                " and by " + origin(current_plugin_));
+    throw Error("node type '" + type + "' is registered twice: by " + origin(it->second.plugin) + " and by " +
+                origin(current_plugin_));
   nodes_.emplace(type, NodeType{std::move(spec), std::move(factory), current_plugin_});
 }
 
 void Registry::add_component(std::string kind, ComponentSpec spec, ComponentFactory factory) {
   const std::string key = kind + "/" + spec.name();
   if (auto it = components_.find(key); it != components_.end())
-    throw Error("component '" + key + "' is registered twice: by " + origin(it->second.plugin) +
-                " and by " + origin(current_plugin_));
+    throw Error("component '" + key + "' is registered twice: by " + origin(it->second.plugin) + " and by " +
+                origin(current_plugin_));
   components_.emplace(key, ComponentType{std::move(kind), std::move(spec), std::move(factory), current_plugin_});
 }
 

@@ -4,8 +4,7 @@
 
 namespace kestrel {
 
-void Report::set_section(const std::string& owner, const std::string& key, nlohmann::json value,
-                         std::string markdown) {
+void Report::set_section(const std::string& owner, const std::string& key, nlohmann::json value, std::string markdown) {
   std::lock_guard lock(mutex_);
   auto it = sections_.find(key);
   if (it != sections_.end() && it->second.owner != owner)

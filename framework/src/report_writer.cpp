@@ -10,7 +10,8 @@ namespace kestrel::detail {
 
 namespace {
 
-void flatten(const nlohmann::json& value, const std::string& prefix, std::vector<std::pair<std::string, std::string>>& rows) {
+void flatten(const nlohmann::json& value, const std::string& prefix,
+             std::vector<std::pair<std::string, std::string>>& rows) {
   if (value.is_object() && !value.empty()) {
     for (const auto& [k, v] : value.items()) flatten(v, prefix.empty() ? k : prefix + "." + k, rows);
   } else if (value.is_number_float()) {
@@ -58,17 +59,19 @@ void write_report(const std::filesystem::path& dir, const RunResult& result,
     md += section.markdown.empty() ? json_to_markdown_table(section.value) : section.markdown;
     if (!md.empty() && md.back() != '\n') md += '\n';
   }
-  md += "\n## Nodes\n\n| node | type | in | out | drops | errors | p50 µs | p99 µs | max µs |\n"
-        "|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
+  md +=
+      "\n## Nodes\n\n| node | type | in | out | drops | errors | p50 µs | p99 µs | max µs |\n"
+      "|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const auto& n : result.nodes) {
     md += fmt::format("| {} | {} | {} | {} | {} | {} | {:.1f} | {:.1f} | {:.1f} |\n", n.id, n.type, n.messages_in,
                       n.messages_out, n.drops, n.errors, n.processing.quantile(0.5) / 1e3,
                       n.processing.quantile(0.99) / 1e3, n.processing.max() / 1e3);
   }
-  md += "\n## Connections\n\n| connection | policy | delivered | drops | queue high-water |\n|---|---|---:|---:|---:|\n";
+  md +=
+      "\n## Connections\n\n| connection | policy | delivered | drops | queue high-water |\n|---|---|---:|---:|---:|\n";
   for (const auto& c : result.connections)
-    md += fmt::format("| {}{} | {} | {} | {} | {} |\n", c.label, c.delayed ? " (delayed)" : "", c.policy,
-                      c.delivered, c.drops, c.high_water);
+    md += fmt::format("| {}{} | {} | {} | {} | {} |\n", c.label, c.delayed ? " (delayed)" : "", c.policy, c.delivered,
+                      c.drops, c.high_water);
   write_file(dir / "report.md", md);
 }
 

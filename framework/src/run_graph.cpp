@@ -17,9 +17,12 @@ using detail::NodeRuntime;
 
 const char* outcome_name(RunOutcome outcome) {
   switch (outcome) {
-    case RunOutcome::completed: return "completed";
-    case RunOutcome::stopped: return "stopped";
-    case RunOutcome::failed: return "failed";
+    case RunOutcome::completed:
+      return "completed";
+    case RunOutcome::stopped:
+      return "stopped";
+    case RunOutcome::failed:
+      return "failed";
   }
   return "?";
 }

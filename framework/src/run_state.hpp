@@ -37,9 +37,9 @@ struct Edge {
 
 struct InputSlot {
   const PortSpec* spec = nullptr;
-  Edge* edge = nullptr;       // null if the optional input is unconnected
-  Envelope current;           // what Context::get returns during a call
-  Envelope incoming_latest;   // realtime: newest value of a `latest` input, not yet seen
+  Edge* edge = nullptr;      // null if the optional input is unconnected
+  Envelope current;          // what Context::get returns during a call
+  Envelope incoming_latest;  // realtime: newest value of a `latest` input, not yet seen
   bool triggers() const { return spec->trigger == Trigger::on_message; }
 };
 
@@ -62,8 +62,8 @@ class NodeRuntime {
   std::unique_ptr<Node> node;
   std::unique_ptr<Logger> logger;
   std::mt19937_64 rng;
-  double tick_interval_ns = 0.0;  // 0: no timer
-  std::uint64_t ticks = 0;        // ticks done; the next one is due at tick_time(ticks)
+  double tick_interval_ns = 0.0;          // 0: no timer
+  std::uint64_t ticks = 0;                // ticks done; the next one is due at tick_time(ticks)
   std::atomic<bool> source_ended{false};  // set by the node thread, read by the run loop
   std::vector<InputSlot> inputs;
   std::vector<std::vector<Edge*>> outputs;

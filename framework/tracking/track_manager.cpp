@@ -45,11 +45,10 @@ msg::Tracks TrackManager::step(Time stamp, const std::vector<Eigen::Vector3d>& d
   }
   // A tentative track that misses once was noise: it goes at once, so it neither lingers in the
   // association nor is confirmed later by an unrelated detection (SORT, Stone Soup's initiators).
-  tracks_.erase(std::remove_if(tracks_.begin(), tracks_.end(),
-                               [&](const Track& t) {
-                                 return t.misses > options_.max_misses || (!t.confirmed && t.misses > 0);
-                               }),
-                tracks_.end());
+  tracks_.erase(
+      std::remove_if(tracks_.begin(), tracks_.end(),
+                     [&](const Track& t) { return t.misses > options_.max_misses || (!t.confirmed && t.misses > 0); }),
+      tracks_.end());
   for (std::size_t d = 0; d < detections.size(); ++d) {
     if (a.col_to_row[d] >= 0) continue;
     tracks_.push_back(Track{next_id_++, 1, 1, 0, options_.confirm_hits <= 1, factory_(detections[d])});
@@ -70,8 +69,10 @@ msg::Tracks TrackManager::step(Time stamp, const std::vector<Eigen::Vector3d>& d
     out.items.push_back(std::move(m));
     auto better = [&](const Track& x, const Track& y) {  // is x a better target than y?
       switch (options_.selection) {
-        case Selection::longest_living: return x.age > y.age;
-        case Selection::most_hits: return x.hits > y.hits;
+        case Selection::longest_living:
+          return x.age > y.age;
+        case Selection::most_hits:
+          return x.hits > y.hits;
         case Selection::nearest:
           return x.filter->predicted_measurement().position.norm() < y.filter->predicted_measurement().position.norm();
       }

@@ -18,11 +18,17 @@ double gate_of(const Params& p) {
 
 ComponentSpec with_common_params(ComponentSpec spec) {
   return spec
-      .param(param("metric", std::string("euclidean")).one_of({"euclidean", "mahalanobis"})
+      .param(param("metric", std::string("euclidean"))
+                 .one_of({"euclidean", "mahalanobis"})
                  .describe("distance between a track's predicted position and a detection"))
-      .param(param("gate_m", 1.0).range(0.0, 1000.0).with_unit("m")
-                 .describe("euclidean: epsilon_max, never assign farther (paper: 1.0 m, its largest reconstruction error)"))
-      .param(param("gate_sigma", 3.0).range(0.0, 1000.0).with_unit("sigma")
+      .param(param("gate_m", 1.0)
+                 .range(0.0, 1000.0)
+                 .with_unit("m")
+                 .describe(
+                     "euclidean: epsilon_max, never assign farther (paper: 1.0 m, its largest reconstruction error)"))
+      .param(param("gate_sigma", 3.0)
+                 .range(0.0, 1000.0)
+                 .with_unit("sigma")
                  .describe("mahalanobis: never assign beyond this many standard deviations"));
 }
 
@@ -36,7 +42,8 @@ Eigen::MatrixXd distance_matrix(const std::vector<PredictedMeasurement>& tracks,
     for (std::size_t d = 0; d < detections.size(); ++d) {
       const Eigen::Vector3d e = detections[d] - tracks[t].position;
       const double distance = metric == Metric::euclidean ? e.norm() : std::sqrt(e.dot(llt.solve(e)));
-      cost(static_cast<Eigen::Index>(t), static_cast<Eigen::Index>(d)) = distance <= gate ? distance : algorithms::kForbidden;
+      cost(static_cast<Eigen::Index>(t), static_cast<Eigen::Index>(d)) =
+          distance <= gate ? distance : algorithms::kForbidden;
     }
   }
   return cost;
@@ -44,8 +51,9 @@ Eigen::MatrixXd distance_matrix(const std::vector<PredictedMeasurement>& tracks,
 
 ComponentSpec HungarianAssociator::spec() {
   return with_common_params(ComponentSpec("hungarian", "Optimal assignment (Hungarian method) within a gate"))
-      .details("Minimises the sum of track-to-detection distances over all tracks and detections (rectangular "
-               "linear sum assignment, paper section 2.3.1); a pair beyond the gate is never assigned.");
+      .details(
+          "Minimises the sum of track-to-detection distances over all tracks and detections (rectangular "
+          "linear sum assignment, paper section 2.3.1); a pair beyond the gate is never assigned.");
 }
 
 HungarianAssociator::HungarianAssociator(const Params& p) : metric_(parse_metric(p)), gate_(gate_of(p)) {}
@@ -57,8 +65,9 @@ algorithms::Assignment HungarianAssociator::associate(const std::vector<Predicte
 
 ComponentSpec GreedyAssociator::spec() {
   return with_common_params(ComponentSpec("greedy", "Greedy nearest neighbour within a gate"))
-      .details("Repeatedly pairs the closest remaining track and detection; fast, and the baseline to A/B "
-               "against the Hungarian associator.");
+      .details(
+          "Repeatedly pairs the closest remaining track and detection; fast, and the baseline to A/B "
+          "against the Hungarian associator.");
 }
 
 GreedyAssociator::GreedyAssociator(const Params& p) : metric_(parse_metric(p)), gate_(gate_of(p)) {}

@@ -14,8 +14,9 @@ class DetectionDropout final : public Node {
 
   static NodeSpec spec() {
     return NodeSpec("detection_dropout", "Temporary occlusion: drops every detection for N frames at a time")
-        .details("Frames are counted as they arrive. From first_s on, every period_s a blackout of `frames` frames "
-                 "publishes an empty detection list (with the frame's stamp), as if the intruder were hidden.")
+        .details(
+            "Frames are counted as they arrive. From first_s on, every period_s a blackout of `frames` frames "
+            "publishes an empty detection list (with the frame's stamp), as if the intruder were hidden.")
         .input(kIn, "detections")
         .output(kOut, "detections, empty during blackouts")
         .param(param("frames", 10).range(0, 100000).describe("frames per blackout"))

@@ -1,13 +1,13 @@
 // The `detection_evaluator` node: precision, recall, per-axis RMSE and lag of detections against
 // the simulator's ground truth, added to report.json as "detection".
 #include <fmt/format.h>
-#include <kestrel/messages/detections.hpp>
-#include <kestrel/evaluation/scoring_params.hpp>
-#include <kestrel/evaluation/truth_pairing.hpp>
-#include <kestrel/messages/ground_truth.hpp>
-#include <kestrel/plugin.hpp>
 
 #include <fstream>
+#include <kestrel/evaluation/scoring_params.hpp>
+#include <kestrel/evaluation/truth_pairing.hpp>
+#include <kestrel/messages/detections.hpp>
+#include <kestrel/messages/ground_truth.hpp>
+#include <kestrel/plugin.hpp>
 #include <map>
 
 #include "detection_scoring.hpp"
@@ -20,22 +20,28 @@ class DetectionEvaluator final : public Node {
   static constexpr Input<msg::GroundTruth> kTruth{"truth"};
 
   static NodeSpec spec() {
-    NodeSpec spec = NodeSpec("detection_evaluator", "Precision, recall, RMSE and lag of detections against ground truth")
-        .details("Each frame's detections are matched to the truth of the same capture time by Hungarian assignment "
-                 "of Euclidean distances; pairs farther than match_radius_m are never matched. Unmatched detections "
-                 "are false positives; unmatched truth objects in view are misses. RMSE is per camera axis over "
-                 "matched detections. The lag is the shift maximising the cross-correlation between the true curve "
-                 "(at capture times) and the detected one (at the times detections reached this node): zero under "
-                 "lockstep, the processing delay under realtime. Adds \"detection\" to report.json and writes "
-                 "detections.csv.")
-        .input(kDetections, "detections to score")
-        .input(kTruth, "ground truth at each capture time");
-    return add_scoring_params(spec, "detection", "largest error still matched (paper: 1.0 m, its maximum reconstruction error)");
+    NodeSpec spec =
+        NodeSpec("detection_evaluator", "Precision, recall, RMSE and lag of detections against ground truth")
+            .details(
+                "Each frame's detections are matched to the truth of the same capture time by Hungarian assignment "
+                "of Euclidean distances; pairs farther than match_radius_m are never matched. Unmatched detections "
+                "are false positives; unmatched truth objects in view are misses. RMSE is per camera axis over "
+                "matched detections. The lag is the shift maximising the cross-correlation between the true curve "
+                "(at capture times) and the detected one (at the times detections reached this node): zero under "
+                "lockstep, the processing delay under realtime. Adds \"detection\" to report.json and writes "
+                "detections.csv.")
+            .input(kDetections, "detections to score")
+            .input(kTruth, "ground truth at each capture time");
+    return add_scoring_params(spec, "detection",
+                              "largest error still matched (paper: 1.0 m, its maximum reconstruction error)");
   }
 
   explicit DetectionEvaluator(NodeInit& init) : DetectionEvaluator(scoring_params(init)) {}
   explicit DetectionEvaluator(const ScoringParams& p)
-      : scorer_(p.match_radius_m), skip_(p.skip_first_s), max_lag_(p.max_lag_s), lag_step_(p.lag_step_s),
+      : scorer_(p.match_radius_m),
+        skip_(p.skip_first_s),
+        max_lag_(p.max_lag_s),
+        lag_step_(p.lag_step_s),
         section_(p.section) {}
 
   void process(Context& ctx) override {
@@ -55,15 +61,16 @@ class DetectionEvaluator final : public Node {
       ctx.log().warn("{} detection message(s) had no ground truth with their capture time; not scored",
                      pairing_.unpaired());
     const DetectionSummary s = scorer_.summary(max_lag_, lag_step_);
-    nlohmann::json json = {{"frames", s.frames},
-                           {"precision", s.precision},
-                           {"recall", s.recall},
-                           {"tp", s.tp},
-                           {"fp", s.fp},
-                           {"fn", s.fn},
-                           {"rmse_m", {{"x", s.rmse.x()}, {"y", s.rmse.y()}, {"z", s.rmse.z()}}},
-                           {"mean_error_m", {{"x", s.mean_error.x()}, {"y", s.mean_error.y()}, {"z", s.mean_error.z()}}},
-                           {"lag_s", s.lag_s ? nlohmann::json(*s.lag_s) : nlohmann::json(nullptr)}};
+    nlohmann::json json = {
+        {"frames", s.frames},
+        {"precision", s.precision},
+        {"recall", s.recall},
+        {"tp", s.tp},
+        {"fp", s.fp},
+        {"fn", s.fn},
+        {"rmse_m", {{"x", s.rmse.x()}, {"y", s.rmse.y()}, {"z", s.rmse.z()}}},
+        {"mean_error_m", {{"x", s.mean_error.x()}, {"y", s.mean_error.y()}, {"z", s.mean_error.z()}}},
+        {"lag_s", s.lag_s ? nlohmann::json(*s.lag_s) : nlohmann::json(nullptr)}};
     const std::string lag = s.lag_s ? fmt::format("{:.3f}", *s.lag_s) : "n/a";
     const std::string md = fmt::format(
         "| frames | precision | recall | TP | FP | FN | RMSE x [m] | RMSE y [m] | RMSE z [m] | lag [s] |\n"
@@ -84,12 +91,11 @@ class DetectionEvaluator final : public Node {
     for (const auto& o : truth.objects) objects.push_back({o.id, o.position_camera, o.in_view});
     const FrameScore frame = scorer_.add_frame(to_seconds(truth.stamp), arrival_s, found, objects);
     for (const auto& m : frame.matches)
-      rows_.push_back(fmt::format("{:.4f},{:.4f},{},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f}", frame.capture_s,
-                                  arrival_s, objects[static_cast<std::size_t>(m.truth)].id,
-                                  found[static_cast<std::size_t>(m.detection)].x(),
-                                  found[static_cast<std::size_t>(m.detection)].y(),
-                                  found[static_cast<std::size_t>(m.detection)].z(), m.error.x(), m.error.y(),
-                                  m.error.z()));
+      rows_.push_back(
+          fmt::format("{:.4f},{:.4f},{},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f}", frame.capture_s, arrival_s,
+                      objects[static_cast<std::size_t>(m.truth)].id, found[static_cast<std::size_t>(m.detection)].x(),
+                      found[static_cast<std::size_t>(m.detection)].y(),
+                      found[static_cast<std::size_t>(m.detection)].z(), m.error.x(), m.error.y(), m.error.z()));
     frames_.push_back(fmt::format("{:.4f},{},{},{}", frame.capture_s, frame.tp, frame.fp, frame.fn));
   }
 

@@ -4,7 +4,8 @@
 
 namespace kestrel::evaluation {
 
-FrameScore DetectionScorer::add_frame(double capture_s, double arrival_s, const std::vector<Eigen::Vector3d>& detections,
+FrameScore DetectionScorer::add_frame(double capture_s, double arrival_s,
+                                      const std::vector<Eigen::Vector3d>& detections,
                                       const std::vector<TruthObject>& truth) {
   FrameScore score;
   score.capture_s = capture_s;

@@ -16,15 +16,18 @@ class EuclideanClusterer final : public Node {
 
   static NodeSpec spec() {
     return NodeSpec("euclidean_clusterer", "Euclidean clusters (PCL); each cluster's centroid is a detection")
-        .details("Points closer than tolerance_m join one cluster. Clusters with fewer than min_points or more than "
-                 "max_points points are dropped: they are unlikely to be a drone (paper: 0.5 m, 20, 200). With "
-                 "--report, frame `snapshot_frame` is drawn as clusters.png (front and top views).")
+        .details(
+            "Points closer than tolerance_m join one cluster. Clusters with fewer than min_points or more than "
+            "max_points points are dropped: they are unlikely to be a drone (paper: 0.5 m, 20, 200). With "
+            "--report, frame `snapshot_frame` is drawn as clusters.png (front and top views).")
         .input(kCloud, "filtered camera-frame points")
         .output(kDetections, "cluster centroids with point count and extent")
         .param(param("tolerance_m", 0.5).range(0.001, 100.0).with_unit("m").describe("cluster distance (paper: 0.5 m)"))
         .param(param("min_points", 20).range(1, 10000000).describe("smallest cluster kept (paper: 20)"))
         .param(param("max_points", 200).range(1, 10000000).describe("largest cluster kept (paper: 200)"))
-        .param(param("snapshot_frame", 30).at_least(-1).describe("cloud index drawn as clusters.png with --report; -1 = none"));
+        .param(param("snapshot_frame", 30)
+                   .at_least(-1)
+                   .describe("cloud index drawn as clusters.png with --report; -1 = none"));
   }
 
   explicit EuclideanClusterer(NodeInit& init) : snapshot_(init.param<std::int64_t>("snapshot_frame")) {
@@ -38,7 +41,8 @@ class EuclideanClusterer final : public Node {
     const auto in = ctx.get(kCloud);
     if (!in->points) throw Error("point cloud message without points");
     const Clusters clusters = find_clusters(in->points, options_);
-    if (clouds_++ == snapshot_ && !ctx.artifact_dir().empty()) draw(ctx.artifact_dir() / "clusters.png", *in->points, clusters);
+    if (clouds_++ == snapshot_ && !ctx.artifact_dir().empty())
+      draw(ctx.artifact_dir() / "clusters.png", *in->points, clusters);
     msg::Detections out;
     out.stamp = in->stamp;
     out.frame = in->frame;
@@ -63,7 +67,11 @@ class EuclideanClusterer final : public Node {
     top.series.push_back(all_top);
     for (std::size_t k = 0; k < c.indices.size(); ++k) {
       plot::Series f{"cluster " + std::to_string(k + 1) + " (" + std::to_string(c.indices[k].size()) + " pts)",
-                     {}, {}, plot::Series::Style::points, plot::palette(k + 1), 2};
+                     {},
+                     {},
+                     plot::Series::Style::points,
+                     plot::palette(k + 1),
+                     2};
       plot::Series t = f;
       for (int i : c.indices[k]) {
         const auto& p = cloud[static_cast<std::size_t>(i)];

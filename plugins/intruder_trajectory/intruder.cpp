@@ -13,7 +13,8 @@ class IntruderNode final : public Node {
   static constexpr Output<msg::GroundTruth> kTruth{"truth"};
 
   static NodeSpec spec() {
-    return NodeSpec("intruder", "A simulated intruder flying a figure-8, a line, random manoeuvres or a recorded flight")
+    return NodeSpec("intruder",
+                    "A simulated intruder flying a figure-8, a line, random manoeuvres or a recorded flight")
         .details(
             "Publishes the intruder's world position and velocity. position_camera is given relative to the "
             "reference camera (camera_position_m, camera_yaw_deg), which also places the figure-8: in the plane "
@@ -22,30 +23,45 @@ class IntruderNode final : public Node {
         .input(kAlso, "other intruders' truth, published together with this one (chain intruders to fly several)",
                {.trigger = Trigger::latest, .optional = true})
         .output(kTruth, "the intruder's true state (and those arriving on `also`)")
-        .param(param("shape", std::string("figure8")).one_of({"figure8", "line", "random", "file"}).describe("trajectory"))
+        .param(
+            param("shape", std::string("figure8")).one_of({"figure8", "line", "random", "file"}).describe("trajectory"))
         .param(param("rate_hz", 100.0).with_unit("Hz").range(1.0, 10000.0).describe("state publication rate"))
         .param(param("object_id", 1).at_least(0).describe("ground-truth id of this intruder"))
         .param(param("start_s", 0.0).with_unit("s").describe("time into the trajectory at which the run starts"))
-        .param(param("camera_position_m", std::vector<double>{0.0, 0.0, 2.0}).with_length(3).with_unit("m")
+        .param(param("camera_position_m", std::vector<double>{0.0, 0.0, 2.0})
+                   .with_length(3)
+                   .with_unit("m")
                    .describe("reference camera position (world)"))
         .param(param("camera_yaw_deg", 0.0).with_unit("deg").range(-360, 360).describe("reference camera heading"))
-        .param(param("distance_m", 5.0).with_unit("m").range(0.5, 100.0)
+        .param(param("distance_m", 5.0)
+                   .with_unit("m")
+                   .range(0.5, 100.0)
                    .describe("figure8: distance of its plane from the camera (paper: 2.5, 5.0, 7.5)"))
         .param(param("half_width_m", 1.0).with_unit("m").range(0.0, 50.0).describe("figure8: half width"))
         .param(param("half_height_m", 0.5).with_unit("m").range(0.0, 50.0).describe("figure8: half height"))
         .param(param("period_s", 12.0).with_unit("s").range(0.5, 3600.0).describe("figure8: time for one loop"))
-        .param(param("line_start_m", std::vector<double>{5.0, 3.0, 2.0}).with_length(3).with_unit("m")
+        .param(param("line_start_m", std::vector<double>{5.0, 3.0, 2.0})
+                   .with_length(3)
+                   .with_unit("m")
                    .describe("line: start (world)"))
-        .param(param("line_end_m", std::vector<double>{5.0, -3.0, 2.0}).with_length(3).with_unit("m")
+        .param(param("line_end_m", std::vector<double>{5.0, -3.0, 2.0})
+                   .with_length(3)
+                   .with_unit("m")
                    .describe("line: end (world)"))
         .param(param("speed_mps", 1.0).with_unit("m/s").range(0.0, 100.0).describe("line: speed"))
-        .param(param("random_centre_m", std::vector<double>{5.0, 0.0, 2.0}).with_length(3).with_unit("m")
+        .param(param("random_centre_m", std::vector<double>{5.0, 0.0, 2.0})
+                   .with_length(3)
+                   .with_unit("m")
                    .describe("random: centre of the box it stays in (world)"))
-        .param(param("random_half_extent_m", std::vector<double>{1.0, 1.5, 0.75}).with_length(3).with_unit("m")
-                   .range(0.0, 100.0).describe("random: half size of that box"))
+        .param(param("random_half_extent_m", std::vector<double>{1.0, 1.5, 0.75})
+                   .with_length(3)
+                   .with_unit("m")
+                   .range(0.0, 100.0)
+                   .describe("random: half size of that box"))
         .param(param("max_speed_mps", 3.0).with_unit("m/s").range(0.0, 100.0).describe("random: speed limit"))
         .param(param("file", std::string("")).describe("file: CSV of t,x,y,z (s, world m)"))
-        .param(param("at_end", std::string("repeat")).one_of({"hold", "repeat"})
+        .param(param("at_end", std::string("repeat"))
+                   .one_of({"hold", "repeat"})
                    .describe("line and file: after the end, hold the last point or go again (line: back and forth)"));
   }
 
@@ -57,9 +73,9 @@ class IntruderNode final : public Node {
     const std::string shape = init.param<std::string>("shape");
     const bool repeat = init.param<std::string>("at_end") == "repeat";
     if (shape == "figure8") {
-      trajectory_ = std::make_unique<FigureEight>(camera_, init.param<double>("distance_m"),
-                                                  init.param<double>("half_width_m"),
-                                                  init.param<double>("half_height_m"), init.param<double>("period_s"));
+      trajectory_ =
+          std::make_unique<FigureEight>(camera_, init.param<double>("distance_m"), init.param<double>("half_width_m"),
+                                        init.param<double>("half_height_m"), init.param<double>("period_s"));
     } else if (shape == "line") {
       trajectory_ = std::make_unique<StraightLine>(init.param<Eigen::Vector3d>("line_start_m"),
                                                    init.param<Eigen::Vector3d>("line_end_m"),

@@ -11,7 +11,10 @@ namespace kestrel::intruder {
 
 FigureEight::FigureEight(const geometry::CameraPose& camera, double distance, double half_width, double half_height,
                          double period)
-    : camera_(camera), distance_(distance), half_width_(half_width), half_height_(half_height),
+    : camera_(camera),
+      distance_(distance),
+      half_width_(half_width),
+      half_height_(half_height),
       omega_(2.0 * M_PI / period) {}
 
 State FigureEight::at(double t) const {

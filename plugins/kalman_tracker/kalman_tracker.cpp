@@ -36,18 +36,20 @@ class KalmanTracker final : public Node {
   static constexpr Output<msg::Tracks> kTracks{"tracks"};
 
   static NodeSpec spec() {
-    NodeSpec spec = NodeSpec("kalman_tracker", "Multi-target tracker: constant-acceleration Kalman filters (paper, 2.3)")
-        .details("Each track is a 9-state constant-acceleration Kalman filter (position, velocity, acceleration) "
-                 "measured by detection centroids. Q is the discrete white-noise-jerk model scaled by q, R = r I3, "
-                 "P0 = p diag(1^2, 30^2, 5.5^2) per axis. Detections no track claims (beyond the associator's gate, "
-                 "epsilon_max) start tracks; a track is deleted after max_misses consecutive misses; the selected "
-                 "target is the longest-living track (or the rule chosen).")
-        .input(kDetections, "detections of one frame (camera frame)")
-        .output(kTracks, "every track with its state and covariance, and the selected target")
-        .param(param("q", 1.0).range(0.0, 1e6).with_unit("m^2/s^5").describe("process noise (jerk) intensity"))
-        .param(param("r", 1.0).range(1e-9, 1e6).with_unit("m^2")
-                   .describe("measurement noise: R = r I3 (paper: best RMSE at r = 1.0)"))
-        .param(param("p", 1.0).range(1e-9, 1e6).describe("initial covariance scale: P0 = p diag(1, 900, 30.25)"));
+    NodeSpec spec =
+        NodeSpec("kalman_tracker", "Multi-target tracker: constant-acceleration Kalman filters (paper, 2.3)")
+            .details(
+                "Each track is a 9-state constant-acceleration Kalman filter (position, velocity, acceleration) "
+                "measured by detection centroids. Q is the discrete white-noise-jerk model scaled by q, R = r I3, "
+                "P0 = p diag(1^2, 30^2, 5.5^2) per axis. Detections no track claims (beyond the associator's gate, "
+                "epsilon_max) start tracks; a track is deleted after max_misses consecutive misses; the selected "
+                "target is the longest-living track (or the rule chosen).")
+            .input(kDetections, "detections of one frame (camera frame)")
+            .output(kTracks, "every track with its state and covariance, and the selected target")
+            .param(param("q", 1.0).range(0.0, 1e6).with_unit("m^2/s^5").describe("process noise (jerk) intensity"))
+            .param(param("r", 1.0).range(1e-9, 1e6).with_unit("m^2").describe(
+                "measurement noise: R = r I3 (paper: best RMSE at r = 1.0)"))
+            .param(param("p", 1.0).range(1e-9, 1e6).describe("initial covariance scale: P0 = p diag(1, 900, 30.25)"));
     return add_track_management_params(spec);
   }
 

@@ -2,6 +2,7 @@
 // selected track's RMSE and the tracking lag, and the selected target's own score, against the
 // simulator's ground truth.
 #include <fmt/format.h>
+
 #include <kestrel/evaluation/scoring_params.hpp>
 #include <kestrel/evaluation/truth_pairing.hpp>
 #include <kestrel/plugin.hpp>
@@ -16,17 +17,19 @@ class MotEvaluator final : public Node {
   static constexpr Input<msg::GroundTruth> kTruth{"truth"};
 
   static NodeSpec spec() {
-    NodeSpec spec = NodeSpec("mot_evaluator", "CLEAR-MOT and IDF1 of tracks against ground truth, and the target's RMSE and lag")
-        .details("Each frame, tracks are paired with the truth of the same capture time. Correspondences from earlier "
-                 "frames are kept while their distance stays within match_radius_m; the rest are assigned by the "
-                 "Hungarian method; a ground-truth object matched to another track than before is an identity "
-                 "switch (MOT16, py-motmetrics). Also the RMSE of the selected track against the truth object it "
-                 "follows, and the tracking lag by cross-correlation. The selected track alone is scored too, as "
-                 "the aiming sees it: frames it is on an intruder, on nothing (off target), missing while an intruder "
-                 "is there, and switches between intruders; target.mota = 1 - (missing + off + switches) / frames "
-                 "with an intruder. Adds \"tracking\" to report.json.")
-        .input(kTracks, "tracks to score")
-        .input(kTruth, "ground truth at each capture time");
+    NodeSpec spec =
+        NodeSpec("mot_evaluator", "CLEAR-MOT and IDF1 of tracks against ground truth, and the target's RMSE and lag")
+            .details(
+                "Each frame, tracks are paired with the truth of the same capture time. Correspondences from earlier "
+                "frames are kept while their distance stays within match_radius_m; the rest are assigned by the "
+                "Hungarian method; a ground-truth object matched to another track than before is an identity "
+                "switch (MOT16, py-motmetrics). Also the RMSE of the selected track against the truth object it "
+                "follows, and the tracking lag by cross-correlation. The selected track alone is scored too, as "
+                "the aiming sees it: frames it is on an intruder, on nothing (off target), missing while an intruder "
+                "is there, and switches between intruders; target.mota = 1 - (missing + off + switches) / frames "
+                "with an intruder. Adds \"tracking\" to report.json.")
+            .input(kTracks, "tracks to score")
+            .input(kTruth, "ground truth at each capture time");
     return add_scoring_params(spec, "tracking", "largest distance still a match");
   }
 
@@ -47,7 +50,8 @@ class MotEvaluator final : public Node {
 
   void finish(Context& ctx) override {
     if (pairing_.unpaired() > 0)
-      ctx.log().warn("{} track message(s) had no ground truth with their capture time; not scored", pairing_.unpaired());
+      ctx.log().warn("{} track message(s) had no ground truth with their capture time; not scored",
+                     pairing_.unpaired());
     const TrackingSummary t = scorer_.summary(params_.max_lag_s, params_.lag_step_s);
     const algorithms::MotSummary& s = t.mot;
     nlohmann::json json = {{"frames", s.frames},
@@ -66,12 +70,13 @@ class MotEvaluator final : public Node {
                            {"rmse_axes_m", {{"x", t.rmse_axes.x()}, {"y", t.rmse_axes.y()}, {"z", t.rmse_axes.z()}}},
                            {"selected_frames", t.selected_frames},
                            {"lag_s", t.lag_s ? nlohmann::json(*t.lag_s) : nlohmann::json(nullptr)},
-                           {"target", {{"mota", t.target.mota()},
-                                       {"frames", t.target.frames},
-                                       {"on_target", t.target.on},
-                                       {"off_target", t.target.off},
-                                       {"missing", t.target.missing},
-                                       {"switches", t.target.switches}}}};
+                           {"target",
+                            {{"mota", t.target.mota()},
+                             {"frames", t.target.frames},
+                             {"on_target", t.target.on},
+                             {"off_target", t.target.off},
+                             {"missing", t.target.missing},
+                             {"switches", t.target.switches}}}};
     const std::string md = fmt::format(
         "| frames | MOTA | MOTP [m] | IDF1 | IDSW | FP | FN | FRAG | MT/PT/ML | target RMSE [m] | lag [s] |\n"
         "|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|\n"

@@ -23,9 +23,9 @@ struct ParticleOptions {
   double r = 1.0;
   double p = 1.0;
   std::string resampling = "systematic";  ///< multinomial, residual, stratified, systematic
-  double resample_below_ess = 0.5;         ///< resample when the effective sample size falls below this share
-  double kernel_bandwidth = 0.5;           ///< h of the regularisation kernel after resampling (0 = none)
-  int max_correction_stages = 10;          ///< tempered stages of one update at most (1 = plain update)
+  double resample_below_ess = 0.5;        ///< resample when the effective sample size falls below this share
+  double kernel_bandwidth = 0.5;          ///< h of the regularisation kernel after resampling (0 = none)
+  int max_correction_stages = 10;         ///< tempered stages of one update at most (1 = plain update)
 };
 
 using ParticleData = mrpt::bayes::CParticleFilterData<State, mrpt::bayes::particle_storage_mode::VALUE>;
@@ -45,9 +45,9 @@ class ParticleTrackFilter final
 
  protected:
   // MRPT's hook: weights the (already predicted) particles by the pending detection.
-  void prediction_and_update_pfStandardProposal(const mrpt::obs::CActionCollection* action,
-                                                const mrpt::obs::CSensoryFrame* observation,
-                                                const mrpt::bayes::CParticleFilter::TParticleFilterOptions& options) override;
+  void prediction_and_update_pfStandardProposal(
+      const mrpt::obs::CActionCollection* action, const mrpt::obs::CSensoryFrame* observation,
+      const mrpt::bayes::CParticleFilter::TParticleFilterOptions& options) override;
 
  private:
   void moments(State& mean, Covariance& cov) const;

@@ -16,28 +16,34 @@ class ParticleTracker final : public Node {
   static constexpr Output<msg::Tracks> kTracks{"tracks"};
 
   static NodeSpec spec() {
-    NodeSpec spec = NodeSpec("particle_tracker", "Multi-target tracker: constant-acceleration particle filters (MRPT)")
-        .details("Same contract as kalman_tracker. Each track is a particle filter (mrpt::bayes::CParticleFilter over "
-                 "a CParticleFilterData model) whose particles follow the constant-acceleration model with "
-                 "white-noise jerk of intensity q; a detection weights them by a Gaussian likelihood of variance r "
-                 "per axis; MRPT resamples when the effective sample size falls below resample_below_ess, and a "
-                 "shrinkage kernel of bandwidth kernel_bandwidth regularises the copies (Musso; Liu and West). A "
-                 "detection much sharper than the cloud (just after birth, or a small r) is applied in up to "
-                 "correction_stages tempered stages (progressive correction), so the cloud does not collapse.")
-        .input(kDetections, "detections of one frame (camera frame)")
-        .output(kTracks, "every track with its state and covariance (particle moments), and the selected target")
-        .param(param("particles", 1000).range(1, 1000000).describe("particles per track"))
-        .param(param("resampling", std::string("systematic")).one_of({"multinomial", "residual", "stratified", "systematic"})
-                   .describe("MRPT resampling method"))
-        .param(param("resample_below_ess", 0.5).range(0.0, 1.0).describe("resample when ESS / N falls below this"))
-        .param(param("q", 1.0).range(0.0, 1e6).with_unit("m^2/s^5").describe("process noise (jerk) intensity"))
-        .param(param("r", 1.0).range(1e-9, 1e6).with_unit("m^2").describe("measurement noise variance per axis"))
-        .param(param("p", 1.0).range(1e-9, 1e6).describe("initial spread: particles drawn from N(z, p diag(1, 900, 30.25))"))
-        .param(param("kernel_bandwidth", 0.5).range(0.0, 1.0)
-                   .describe("regularisation after resampling, h of the shrinkage kernel (Musso's optimum for 1000 "
-                             "particles in 9 dimensions: 0.54); 0 = none"))
-        .param(param("correction_stages", 10).range(1, 1000)
-                   .describe("most tempered stages one detection is applied in; 1 = a plain update"));
+    NodeSpec spec =
+        NodeSpec("particle_tracker", "Multi-target tracker: constant-acceleration particle filters (MRPT)")
+            .details(
+                "Same contract as kalman_tracker. Each track is a particle filter (mrpt::bayes::CParticleFilter over "
+                "a CParticleFilterData model) whose particles follow the constant-acceleration model with "
+                "white-noise jerk of intensity q; a detection weights them by a Gaussian likelihood of variance r "
+                "per axis; MRPT resamples when the effective sample size falls below resample_below_ess, and a "
+                "shrinkage kernel of bandwidth kernel_bandwidth regularises the copies (Musso; Liu and West). A "
+                "detection much sharper than the cloud (just after birth, or a small r) is applied in up to "
+                "correction_stages tempered stages (progressive correction), so the cloud does not collapse.")
+            .input(kDetections, "detections of one frame (camera frame)")
+            .output(kTracks, "every track with its state and covariance (particle moments), and the selected target")
+            .param(param("particles", 1000).range(1, 1000000).describe("particles per track"))
+            .param(param("resampling", std::string("systematic"))
+                       .one_of({"multinomial", "residual", "stratified", "systematic"})
+                       .describe("MRPT resampling method"))
+            .param(param("resample_below_ess", 0.5).range(0.0, 1.0).describe("resample when ESS / N falls below this"))
+            .param(param("q", 1.0).range(0.0, 1e6).with_unit("m^2/s^5").describe("process noise (jerk) intensity"))
+            .param(param("r", 1.0).range(1e-9, 1e6).with_unit("m^2").describe("measurement noise variance per axis"))
+            .param(param("p", 1.0).range(1e-9, 1e6).describe(
+                "initial spread: particles drawn from N(z, p diag(1, 900, 30.25))"))
+            .param(param("kernel_bandwidth", 0.5)
+                       .range(0.0, 1.0)
+                       .describe("regularisation after resampling, h of the shrinkage kernel (Musso's optimum for 1000 "
+                                 "particles in 9 dimensions: 0.54); 0 = none"))
+            .param(param("correction_stages", 10)
+                       .range(1, 1000)
+                       .describe("most tempered stages one detection is applied in; 1 = a plain update"));
     return add_track_management_params(spec);
   }
 

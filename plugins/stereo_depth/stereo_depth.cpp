@@ -1,10 +1,9 @@
 // The `stereo_depth` node: disparity by OpenCV StereoSGBM (or StereoBM), reprojected to a
 // camera-frame point cloud by the paper's equation (1).
+#include <algorithm>
 #include <kestrel/messages/point_cloud.hpp>
 #include <kestrel/messages/stereo_frame.hpp>
 #include <kestrel/plugin.hpp>
-
-#include <algorithm>
 #include <opencv2/imgcodecs.hpp>
 
 #include "stereo_matching.hpp"
@@ -18,38 +17,58 @@ class StereoDepth final : public Node {
 
   static NodeSpec spec() {
     return NodeSpec("stereo_depth", "Stereo disparity (OpenCV SGBM or BM) reprojected to a 3D point cloud")
-        .details("Each valid disparity d at pixel (u, v) becomes the point b/d * (u - cx, v - cy, f) in the left "
-                 "camera's optical frame (paper, equation 1), kept if its depth lies in [min_depth_m, max_depth_m]. "
-                 "With --report, frame `snapshot_frame` is saved as left.png and disparity.png.")
+        .details(
+            "Each valid disparity d at pixel (u, v) becomes the point b/d * (u - cx, v - cy, f) in the left "
+            "camera's optical frame (paper, equation 1), kept if its depth lies in [min_depth_m, max_depth_m]. "
+            "With --report, frame `snapshot_frame` is saved as left.png and disparity.png.")
         .input(kFrame, "rectified stereo pair")
         .output(kCloud, "camera-frame points")
         .param(param("algorithm", std::string("sgbm")).one_of({"sgbm", "bm"}).describe("OpenCV matcher"))
-        .param(param("mode", std::string("sgbm")).one_of({"sgbm", "hh", "sgbm_3way", "hh4"})
+        .param(param("mode", std::string("sgbm"))
+                   .one_of({"sgbm", "hh", "sgbm_3way", "hh4"})
                    .describe("SGBM mode: 5 paths, full 8 paths, 3-way or 4-path HH"))
         .param(param("min_disparity", 0).range(-256, 256).with_unit("px").describe("smallest disparity searched"))
-        .param(param("num_disparities", 112).range(16, 1024).with_unit("px")
-                   .describe("disparity search range, a multiple of 16 (112 reaches the oCamS's 0.5 m at fx 452, b 0.12)"))
+        .param(
+            param("num_disparities", 112)
+                .range(16, 1024)
+                .with_unit("px")
+                .describe("disparity search range, a multiple of 16 (112 reaches the oCamS's 0.5 m at fx 452, b 0.12)"))
         .param(param("block_size", 7).range(1, 51).with_unit("px").describe("matched block size, odd"))
-        .param(param("p1", 0).at_least(0).describe("SGBM smoothness penalty for +-1 disparity changes; 0 = 8 * block_size^2"))
+        .param(param("p1", 0).at_least(0).describe(
+            "SGBM smoothness penalty for +-1 disparity changes; 0 = 8 * block_size^2"))
         .param(param("p2", 0).at_least(0).describe("SGBM penalty for larger changes; 0 = 32 * block_size^2"))
         .param(param("uniqueness_ratio", 10).range(0, 100).with_unit("%").describe("best match margin over the second"))
-        .param(param("speckle_window_size", 100).range(0, 10000).with_unit("px").describe("speckle filter region size; 0 = off"))
-        .param(param("speckle_range", 2).range(0, 64).with_unit("px").describe("disparity variation within a speckle region"))
-        .param(param("disp12_max_diff", 1).range(-1, 1024).with_unit("px").describe("left-right check tolerance; -1 = off"))
+        .param(param("speckle_window_size", 100)
+                   .range(0, 10000)
+                   .with_unit("px")
+                   .describe("speckle filter region size; 0 = off"))
+        .param(param("speckle_range", 2)
+                   .range(0, 64)
+                   .with_unit("px")
+                   .describe("disparity variation within a speckle region"))
+        .param(param("disp12_max_diff", 1)
+                   .range(-1, 1024)
+                   .with_unit("px")
+                   .describe("left-right check tolerance; -1 = off"))
         .param(param("pre_filter_cap", 63).range(1, 255).describe("pre-filter clipping"))
         .param(param("texture_threshold", 10).range(0, 10000).describe("BM only: minimum texture"))
-        .param(param("min_depth_m", 0.5).range(0.01, 1000.0).with_unit("m").describe("nearest point kept (oCamS: 0.5 m)"))
-        .param(param("max_depth_m", 15.0).range(0.01, 1000.0).with_unit("m").describe("farthest point kept (oCamS: 15 m)"))
+        .param(
+            param("min_depth_m", 0.5).range(0.01, 1000.0).with_unit("m").describe("nearest point kept (oCamS: 0.5 m)"))
+        .param(
+            param("max_depth_m", 15.0).range(0.01, 1000.0).with_unit("m").describe("farthest point kept (oCamS: 15 m)"))
         .param(param("pixel_step", 1).range(1, 16).with_unit("px").describe("reproject every n-th pixel and row"))
-        .param(param("downscale", 1).range(1, 8)
+        .param(param("downscale", 1)
+                   .range(1, 8)
                    .describe("match on images shrunk by this factor (num_disparities is divided by it too): "
                              "faster, coarser depth"))
         .param(param("snapshot_frame", 30).at_least(-1).describe("frame index saved as PNG with --report; -1 = none"));
   }
 
   explicit StereoDepth(NodeInit& init)
-      : min_depth_(init.param<double>("min_depth_m")), max_depth_(init.param<double>("max_depth_m")),
-        step_(init.param<int>("pixel_step")), downscale_(init.param<int>("downscale")),
+      : min_depth_(init.param<double>("min_depth_m")),
+        max_depth_(init.param<double>("max_depth_m")),
+        step_(init.param<int>("pixel_step")),
+        downscale_(init.param<int>("downscale")),
         snapshot_(init.param<std::int64_t>("snapshot_frame")) {
     options_.algorithm = init.param<std::string>("algorithm");
     options_.mode = init.param<std::string>("mode");
@@ -80,7 +99,8 @@ class StereoDepth final : public Node {
     if (static_cast<std::int64_t>(frame->frame_index) == snapshot_ && !ctx.artifact_dir().empty()) {
       cv::imwrite((ctx.artifact_dir() / "left.png").string(), frame->left);
       cv::imwrite((ctx.artifact_dir() / "right.png").string(), frame->right);
-      cv::imwrite((ctx.artifact_dir() / "disparity.png").string(), colourise_disparity(disparity, options_.num_disparities));
+      cv::imwrite((ctx.artifact_dir() / "disparity.png").string(),
+                  colourise_disparity(disparity, options_.num_disparities));
     }
     ctx.publish(kCloud, std::move(cloud));
   }

@@ -27,9 +27,12 @@ cv::Ptr<cv::StereoMatcher> make_matcher(const MatcherOptions& o) {
   const int p2 = o.p2 > 0 ? o.p2 : 32 * area;
   if (p2 <= p1) throw Error("SGBM needs p2 > p1");
   int mode = cv::StereoSGBM::MODE_SGBM;
-  if (o.mode == "hh") mode = cv::StereoSGBM::MODE_HH;
-  else if (o.mode == "sgbm_3way") mode = cv::StereoSGBM::MODE_SGBM_3WAY;
-  else if (o.mode == "hh4") mode = cv::StereoSGBM::MODE_HH4;
+  if (o.mode == "hh")
+    mode = cv::StereoSGBM::MODE_HH;
+  else if (o.mode == "sgbm_3way")
+    mode = cv::StereoSGBM::MODE_SGBM_3WAY;
+  else if (o.mode == "hh4")
+    mode = cv::StereoSGBM::MODE_HH4;
   return cv::StereoSGBM::create(o.min_disparity, o.num_disparities, o.block_size, p1, p2, o.disp12_max_diff,
                                 o.pre_filter_cap, o.uniqueness_ratio, o.speckle_window_size, o.speckle_range, mode);
 }
@@ -65,8 +68,8 @@ pcl::PointCloud<pcl::PointXYZ>::Ptr reproject(const cv::Mat& disparity16, const 
       const double d = row[u] / 16.0;
       if (d < d_min || d > d_max) continue;
       const double scale = c.baseline_m / d;
-      cloud->push_back(pcl::PointXYZ(static_cast<float>(scale * (u - c.cx)), static_cast<float>(scale * (v - c.cy) * c.fx / c.fy),
-                                     static_cast<float>(fb / d)));
+      cloud->push_back(pcl::PointXYZ(static_cast<float>(scale * (u - c.cx)),
+                                     static_cast<float>(scale * (v - c.cy) * c.fx / c.fy), static_cast<float>(fb / d)));
     }
   }
   cloud->width = static_cast<std::uint32_t>(cloud->size());

@@ -15,16 +15,16 @@ struct MatcherOptions {
   std::string algorithm = "sgbm";  ///< sgbm or bm
   std::string mode = "sgbm";       ///< sgbm, hh, sgbm_3way, hh4 (SGBM only)
   int min_disparity = 0;
-  int num_disparities = 112;       ///< multiple of 16
-  int block_size = 7;              ///< odd
-  int p1 = 0;                      ///< 0: 8 * block_size^2
-  int p2 = 0;                      ///< 0: 32 * block_size^2
+  int num_disparities = 112;  ///< multiple of 16
+  int block_size = 7;         ///< odd
+  int p1 = 0;                 ///< 0: 8 * block_size^2
+  int p2 = 0;                 ///< 0: 32 * block_size^2
   int uniqueness_ratio = 10;
   int speckle_window_size = 100;
   int speckle_range = 2;
   int disp12_max_diff = 1;
   int pre_filter_cap = 63;
-  int texture_threshold = 10;      ///< BM only
+  int texture_threshold = 10;  ///< BM only
 };
 
 /// Throws kestrel::Error if the options are not ones OpenCV accepts.

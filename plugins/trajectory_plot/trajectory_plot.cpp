@@ -1,13 +1,12 @@
 // The `trajectory_plot` node: records ground truth, detections and tracks over a run and draws
 // them against time, one panel per axis, as PNG (plus the samples as CSV).
+#include <cmath>
+#include <fstream>
 #include <kestrel/messages/detections.hpp>
 #include <kestrel/messages/ground_truth.hpp>
 #include <kestrel/messages/tracks.hpp>
 #include <kestrel/plot/line_plot.hpp>
 #include <kestrel/plugin.hpp>
-
-#include <cmath>
-#include <fstream>
 #include <map>
 
 namespace kestrel::trajectory_plot {
@@ -20,8 +19,9 @@ class TrajectoryPlot final : public Node {
 
   static NodeSpec spec() {
     return NodeSpec("trajectory_plot", "Plots truth, detections and the selected track against time (PNG and CSV)")
-        .details("Camera-frame x, y and z against time, one panel each, like the paper's Figure 5. Files go to "
-                 "output_dir, or to the report folder (kestrel run --report DIR) when output_dir is empty.")
+        .details(
+            "Camera-frame x, y and z against time, one panel each, like the paper's Figure 5. Files go to "
+            "output_dir, or to the report folder (kestrel run --report DIR) when output_dir is empty.")
         .input(kTruth, "ground truth (camera frame is plotted)", {.optional = true})
         .input(kDetections, "detections (camera frame)", {.optional = true})
         .input(kTracks, "tracks; the selected one is plotted", {.optional = true})
@@ -33,9 +33,11 @@ class TrajectoryPlot final : public Node {
   }
 
   explicit TrajectoryPlot(NodeInit& init)
-      : name_(init.param<std::string>("name")), output_dir_(init.param<std::string>("output_dir")),
+      : name_(init.param<std::string>("name")),
+        output_dir_(init.param<std::string>("output_dir")),
         max_samples_(static_cast<std::size_t>(init.param<std::int64_t>("max_samples"))),
-        from_(init.param<double>("from_s")), to_(init.param<double>("to_s")) {}
+        from_(init.param<double>("from_s")),
+        to_(init.param<double>("to_s")) {}
 
   void process(Context& ctx) override {
     if (ctx.triggered_by(kTruth)) {

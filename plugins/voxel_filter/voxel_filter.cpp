@@ -14,12 +14,16 @@ class VoxelFilter final : public Node {
 
   static NodeSpec spec() {
     return NodeSpec("voxel_filter", "Depth pass-through then voxel-grid down-sampling (PCL)")
-        .details("Points whose camera z lies outside [min_depth_m, max_depth_m] are dropped (PCL PassThrough); the "
-                 "rest are replaced by the centroid of each occupied voxel (PCL VoxelGrid).")
+        .details(
+            "Points whose camera z lies outside [min_depth_m, max_depth_m] are dropped (PCL PassThrough); the "
+            "rest are replaced by the centroid of each occupied voxel (PCL VoxelGrid).")
         .input(kCloud, "camera-frame points")
         .output(kFiltered, "one point per occupied voxel")
         .param(param("leaf_size_m", 0.1).range(0.001, 10.0).with_unit("m").describe("voxel edge (paper: 0.1 m)"))
-        .param(param("max_depth_m", 10.0).range(0.0, 1000.0).with_unit("m").describe("farthest camera z kept (paper: 10 m)"))
+        .param(param("max_depth_m", 10.0)
+                   .range(0.0, 1000.0)
+                   .with_unit("m")
+                   .describe("farthest camera z kept (paper: 10 m)"))
         .param(param("min_depth_m", 0.0).range(0.0, 1000.0).with_unit("m").describe("nearest camera z kept"))
         .param(param("min_points_per_voxel", 1).range(1, 100000).describe("voxels with fewer points are dropped"));
   }

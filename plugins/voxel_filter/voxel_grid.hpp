@@ -13,6 +13,7 @@ struct VoxelOptions {
   int min_points_per_voxel = 1;
 };
 
-pcl::PointCloud<pcl::PointXYZ>::Ptr downsample(const pcl::PointCloud<pcl::PointXYZ>& cloud, const VoxelOptions& options);
+pcl::PointCloud<pcl::PointXYZ>::Ptr downsample(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                                               const VoxelOptions& options);
 
 }  // namespace kestrel::voxel

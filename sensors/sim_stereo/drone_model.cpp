@@ -14,8 +14,8 @@ mrpt::opengl::CSetOfObjects::Ptr make_hexacopter(const DroneShape& shape, std::u
   auto rotors = mrpt::opengl::CSetOfTexturedTriangles::Create();
 
   // Vertical layout, bottom to top: skids, legs, battery, hub, arms and motors, rotor discs.
-  const double top = shape.height_m * 0.33;     // rotor plane
-  const double bottom = top - shape.height_m;   // skids
+  const double top = shape.height_m * 0.33;    // rotor plane
+  const double bottom = top - shape.height_m;  // skids
   const double hub_h = 0.07;
   add_box(*frame, {0, 0, top - 0.04 - hub_h / 2}, {shape.body_size_m, shape.body_size_m * 0.8, hub_h});
   add_box(*frame, {0, 0, top - 0.04 - hub_h - 0.03}, {0.13, 0.09, 0.06});  // battery and gimbal
@@ -23,8 +23,8 @@ mrpt::opengl::CSetOfObjects::Ptr make_hexacopter(const DroneShape& shape, std::u
     const double a = M_PI / 6 + k * M_PI / 3;
     const Eigen::Matrix3d yaw = Eigen::AngleAxisd(a, Eigen::Vector3d::UnitZ()).toRotationMatrix();
     const Eigen::Vector3d dir(std::cos(a), std::sin(a), 0.0);
-    add_box(*frame, dir * (shape.arm_length_m / 2) + Eigen::Vector3d(0, 0, top - 0.035), {shape.arm_length_m, 0.025, 0.02},
-            yaw);
+    add_box(*frame, dir * (shape.arm_length_m / 2) + Eigen::Vector3d(0, 0, top - 0.035),
+            {shape.arm_length_m, 0.025, 0.02}, yaw);
     add_box(*frame, dir * shape.arm_length_m + Eigen::Vector3d(0, 0, top - 0.03), {0.04, 0.04, 0.045}, yaw);
     add_disc(*rotors, dir * shape.arm_length_m + Eigen::Vector3d(0, 0, top), shape.rotor_radius_m, 0.006);
   }

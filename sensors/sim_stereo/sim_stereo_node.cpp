@@ -1,12 +1,11 @@
 // The `sim_stereo` node: a simulated stereo camera that renders the world with MRPT's off-screen
 // EGL renderer. Defaults are the WithRobot oCamS-1CGN-U at 640x480.
+#include <cmath>
 #include <kestrel/geometry/frames.hpp>
 #include <kestrel/messages/ground_truth.hpp>
 #include <kestrel/messages/stereo_frame.hpp>
 #include <kestrel/messages/vehicle_state.hpp>
 #include <kestrel/plugin.hpp>
-
-#include <cmath>
 #include <opencv2/imgproc.hpp>
 
 #include "stereo_renderer.hpp"
@@ -37,31 +36,48 @@ class SimStereo final : public Node {
         .param(param("width", 640).range(64, 4096).with_unit("px").describe("image width"))
         .param(param("height", 480).range(48, 4096).with_unit("px").describe("image height"))
         .param(param("fps", 30.0).range(0.1, 240.0).with_unit("Hz").describe("frame rate"))
-        .param(param("hfov_deg", 70.6).range(10.0, 150.0).with_unit("deg")
+        .param(param("hfov_deg", 70.6)
+                   .range(10.0, 150.0)
+                   .with_unit("deg")
                    .describe("horizontal field of view; 70.6 gives the oCamS's rectified fx = 452 px at 640 px "
                              "(the paper states 92.8)"))
         .param(param("baseline_m", 0.12).range(0.01, 2.0).with_unit("m").describe("distance between the cameras"))
-        .param(param("min_depth_m", 0.5).range(0.05, 100.0).with_unit("m").describe("nearest depth the camera measures"))
-        .param(param("max_depth_m", 15.0).range(0.1, 1000.0).with_unit("m").describe("farthest depth the camera measures"))
+        .param(
+            param("min_depth_m", 0.5).range(0.05, 100.0).with_unit("m").describe("nearest depth the camera measures"))
+        .param(
+            param("max_depth_m", 15.0).range(0.1, 1000.0).with_unit("m").describe("farthest depth the camera measures"))
         .param(param("noise_sigma", 1.5).range(0.0, 50.0).with_unit("grey levels").describe("Gaussian image noise"))
         .param(param("color", false).describe("publish BGR images instead of 8-bit grey"))
-        .param(param("camera_position_m", std::vector<double>{0.0, 0.0, 2.0}).with_length(3).with_unit("m")
+        .param(param("camera_position_m", std::vector<double>{0.0, 0.0, 2.0})
+                   .with_length(3)
+                   .with_unit("m")
                    .describe("fixed camera position (world), when `pose` is not connected"))
         .param(param("camera_yaw_deg", 0.0).range(-360.0, 360.0).with_unit("deg").describe("fixed camera heading"))
-        .param(param("camera_offset_m", std::vector<double>{0.1, 0.0, 0.0}).with_length(3).with_unit("m")
+        .param(param("camera_offset_m", std::vector<double>{0.1, 0.0, 0.0})
+                   .with_length(3)
+                   .with_unit("m")
                    .describe("camera position in the vehicle's body frame, when `pose` is connected"))
         .param(param("clutter_count", 12).range(0, 500).describe("trees and buildings in the background"))
-        .param(param("clutter_min_range_m", 12.0).range(0.0, 500.0).with_unit("m").describe("clutter's nearest distance from the world origin"))
-        .param(param("clutter_max_range_m", 40.0).range(0.0, 500.0).with_unit("m").describe("clutter's farthest distance"))
-        .param(param("scene_seed", 1).at_least(0).describe("lays out the world and its textures; the run seed drives the noise"));
+        .param(param("clutter_min_range_m", 12.0)
+                   .range(0.0, 500.0)
+                   .with_unit("m")
+                   .describe("clutter's nearest distance from the world origin"))
+        .param(
+            param("clutter_max_range_m", 40.0).range(0.0, 500.0).with_unit("m").describe("clutter's farthest distance"))
+        .param(param("scene_seed", 1)
+                   .at_least(0)
+                   .describe("lays out the world and its textures; the run seed drives the noise"));
   }
 
   explicit SimStereo(NodeInit& init)
-      : noise_sigma_(init.param<double>("noise_sigma")), color_(init.param<bool>("color")),
-        min_depth_(init.param<double>("min_depth_m")), max_depth_(init.param<double>("max_depth_m")),
+      : noise_sigma_(init.param<double>("noise_sigma")),
+        color_(init.param<bool>("color")),
+        min_depth_(init.param<double>("min_depth_m")),
+        max_depth_(init.param<double>("max_depth_m")),
         fixed_camera_(geometry::level_camera(init.param<Eigen::Vector3d>("camera_position_m"),
                                              init.param<double>("camera_yaw_deg") * M_PI / 180.0)),
-        offset_(init.param<Eigen::Vector3d>("camera_offset_m")), scene_(scene_options(init)),
+        offset_(init.param<Eigen::Vector3d>("camera_offset_m")),
+        scene_(scene_options(init)),
         renderer_(calibration(init)) {
     if (min_depth_ >= max_depth_) throw Error("min_depth_m must be below max_depth_m");
     calibration_ = calibration(init);
@@ -80,7 +96,8 @@ class SimStereo final : public Node {
         now.position_world = o.position_world + o.velocity_world * dt;
         now.position_camera = camera.to_camera(now.position_world);
         now.in_view = in_view(now.position_camera);
-        const double yaw = o.velocity_world.head<2>().norm() > 0.1 ? std::atan2(o.velocity_world.y(), o.velocity_world.x()) : 0.0;
+        const double yaw =
+            o.velocity_world.head<2>().norm() > 0.1 ? std::atan2(o.velocity_world.y(), o.velocity_world.x()) : 0.0;
         scene_.set_intruder(o.id, now.position_world, yaw);
         truth.objects.push_back(now);
       }

@@ -7,8 +7,8 @@
 namespace kestrel::sim {
 
 struct TextureStyle {
-  cv::Vec3b dark;   ///< BGR
-  cv::Vec3b light;  ///< BGR
+  cv::Vec3b dark;            ///< BGR
+  cv::Vec3b light;           ///< BGR
   double fine_weight = 0.5;  ///< share of pixel-scale noise against blotches
   int blotch_px = 8;         ///< blur radius of the coarse layer, pixels
 };

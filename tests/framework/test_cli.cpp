@@ -1,6 +1,6 @@
 // The kestrel command line: exit codes, reports, and clean shutdown on SIGINT and SIGTERM.
-#include <gmock/gmock.h>
 #include <fcntl.h>
+#include <gmock/gmock.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -179,7 +179,8 @@ TEST(Cli, MotComputesClearMotOnMotChallengeFiles) {
   std::ofstream(dir / "test.txt") << "1,1,0,0,10,10,1,0,0,5\n1,2,100,0,10,10,1,2,0,5\n1,3,300,300,10,10,1,30,30,5\n"
                                      "2,1,0,0,10,10,1,0,0,5\n"
                                      "3,1,0,0,10,10,1,0,0,5\n3,3,100,0,10,10,1,2,0,5\n";
-  for (const std::vector<std::string>& mode : {std::vector<std::string>{"--iou", "0.5"}, std::vector<std::string>{"--dist", "0.5"}}) {
+  for (const std::vector<std::string>& mode :
+       {std::vector<std::string>{"--iou", "0.5"}, std::vector<std::string>{"--dist", "0.5"}}) {
     std::vector<std::string> args = {"mot", (dir / "gt.txt").string(), (dir / "test.txt").string(), "--json",
                                      (dir / "m.json").string()};
     args.insert(args.end(), mode.begin(), mode.end());

@@ -15,7 +15,8 @@ std::string graph(const std::string& shaper) {
   - id: s
     type: shape
     params:
-      shaper: )" + shaper + R"(
+      shaper: )" +
+         shaper + R"(
   - {id: sink, type: collector}
 connections:
   - {from: src.out, to: s.in}
@@ -51,10 +52,12 @@ TEST(Components, UnknownComponentsAndTheirParametersAreLocated) {
   EXPECT_THAT(messages(build(graph("{type: clamp, hgh: 3}"))),
               ::testing::ElementsAre(HasSubstr("g.yaml:6:29: error: node 's' (shape) shaper 'clamp': unknown parameter "
                                                "'hgh' (did you mean 'high'?)")));
-  EXPECT_THAT(messages(build(graph("{type: offset, amount: 1000}"))),
-              ::testing::ElementsAre(HasSubstr("g.yaml:6:38: error: node 's' (shape) shaper 'offset': parameter 'amount' = "
-                                               "1000 is out of range [-100, 100]")));
-  EXPECT_THAT(messages(build(graph("{amount: 3}"))), ::testing::ElementsAre(HasSubstr("needs a 'type' naming the shaper")));
+  EXPECT_THAT(
+      messages(build(graph("{type: offset, amount: 1000}"))),
+      ::testing::ElementsAre(HasSubstr("g.yaml:6:38: error: node 's' (shape) shaper 'offset': parameter 'amount' = "
+                                       "1000 is out of range [-100, 100]")));
+  EXPECT_THAT(messages(build(graph("{amount: 3}"))),
+              ::testing::ElementsAre(HasSubstr("needs a 'type' naming the shaper")));
   // Overrides replace the whole component.
   auto r = build(graph("offset"), {"s.shaper={type: clamp, high: 0.5}"});
   ASSERT_TRUE(r.graph) << r.diagnostics.str();

@@ -117,8 +117,10 @@ connections:
   EXPECT_FALSE(r.graph);
   const std::string all = r.diagnostics.str();
   // The bad value is in the included file; the bad key and the duplicate id are in g.yaml.
-  EXPECT_THAT(all, HasSubstr(files.path("chain.yaml") + ":6:23: error: node 'src' (counter_source): parameter 'rate_hz'"));
-  EXPECT_THAT(all, HasSubstr(files.path("g.yaml") + ":3:11: error: node 'src' (counter_source): unknown parameter 'rate_hs'"));
+  EXPECT_THAT(all,
+              HasSubstr(files.path("chain.yaml") + ":6:23: error: node 'src' (counter_source): parameter 'rate_hz'"));
+  EXPECT_THAT(
+      all, HasSubstr(files.path("g.yaml") + ":3:11: error: node 'src' (counter_source): unknown parameter 'rate_hs'"));
   EXPECT_THAT(all, HasSubstr(files.path("g.yaml") + ":5:10: error: duplicate node id 'relay' (first defined at " +
                              files.path("chain.yaml") + ":7:5)"));
 }
@@ -129,7 +131,8 @@ TEST(GraphInclude, MissingFilesCyclesAndBadEntriesAreReported) {
   files.write("b.yaml", "include: [a.yaml]\nnodes:\n  - {id: b, type: collector}\n");
   auto r = files.build("a.yaml");
   EXPECT_FALSE(r.graph);
-  EXPECT_THAT(r.diagnostics.str(), HasSubstr(files.path("b.yaml") + ":1:11: error: 'a.yaml' is already being included"));
+  EXPECT_THAT(r.diagnostics.str(),
+              HasSubstr(files.path("b.yaml") + ":1:11: error: 'a.yaml' is already being included"));
 
   files.write("g.yaml", "include:\n  - nowhere.yaml\n  - {file: a.yaml, sett: {}}\n  - [x]\nnodes: []\n");
   r = files.build("g.yaml");
@@ -152,6 +155,7 @@ connections:
 )");
   const auto r = files.build("g.yaml");
   EXPECT_FALSE(r.graph);
-  EXPECT_THAT(r.diagnostics.str(), HasSubstr(files.path("g.yaml") + ":5:27: error: input relay.in is already connected (" +
-                                             files.path("chain.yaml") + ":10:5)"));
+  EXPECT_THAT(r.diagnostics.str(),
+              HasSubstr(files.path("g.yaml") + ":5:27: error: input relay.in is already connected (" +
+                        files.path("chain.yaml") + ":10:5)"));
 }

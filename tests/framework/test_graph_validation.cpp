@@ -116,8 +116,9 @@ TEST(GraphValidation, UnknownPortSuggestsAndExplainsDirection) {
 TEST(GraphValidation, PortTypeMismatchNamesBothPortsAndTypes) {
   std::string yaml = kValid;
   yaml.replace(yaml.find("counter_source"), 14, "blob_source");
-  EXPECT_THAT(only_error(build(yaml)),
-              HasSubstr("g.yaml:9:5: error: port type mismatch: src.out is test.Blob, but sink.in expects test.Number"));
+  EXPECT_THAT(
+      only_error(build(yaml)),
+      HasSubstr("g.yaml:9:5: error: port type mismatch: src.out is test.Blob, but sink.in expects test.Number"));
 }
 
 TEST(GraphValidation, UnconnectedInputIsAnErrorUnlessOptional) {
@@ -189,7 +190,8 @@ TEST(GraphValidation, OverridesAreValidatedLikeFileValues) {
               HasSubstr("--set src.rate=20: error: node 'src' (counter_source): unknown parameter 'rate' (did you mean "
                         "'rate_hz'?)"));
   EXPECT_THAT(only_error(build(kValid, {"src.rate_hz=-1"})), HasSubstr("out of range"));
-  EXPECT_THAT(only_error(build(kValid, {"snk.keep=1"})), HasSubstr("no node 'snk' in the graph (did you mean 'sink'?)"));
+  EXPECT_THAT(only_error(build(kValid, {"snk.keep=1"})),
+              HasSubstr("no node 'snk' in the graph (did you mean 'sink'?)"));
   EXPECT_THAT(only_error(build(kValid, {"rate_hz=1"})), HasSubstr("expected --set node.param=value"));
 }
 
@@ -214,10 +216,14 @@ connections:
 )";
   auto r = build(yaml);
   EXPECT_FALSE(r.graph);
-  EXPECT_THAT(messages(r), ElementsAre(HasSubstr("g.yaml:2:55: error: node 'src' (counter_source): parameter 'rate_hz' = 0 is out of range [0.001, 1000000] Hz"),
-                                       HasSubstr("g.yaml:3:19: error: unknown node type 'nonsense'"),
-                                       HasSubstr("g.yaml:4:42: error: node 'sink' (collector): unknown parameter 'kep' (did you mean 'keep'?)"),
-                                       HasSubstr("g.yaml:6:25: error: node 'sink' (collector) has no input 'inn' (did you mean 'in'?)")));
+  EXPECT_THAT(
+      messages(r),
+      ElementsAre(
+          HasSubstr("g.yaml:2:55: error: node 'src' (counter_source): parameter 'rate_hz' = 0 is out of range [0.001, "
+                    "1000000] Hz"),
+          HasSubstr("g.yaml:3:19: error: unknown node type 'nonsense'"),
+          HasSubstr("g.yaml:4:42: error: node 'sink' (collector): unknown parameter 'kep' (did you mean 'keep'?)"),
+          HasSubstr("g.yaml:6:25: error: node 'sink' (collector) has no input 'inn' (did you mean 'in'?)")));
 }
 
 TEST(QueuePolicy, ParsesEveryForm) {

@@ -124,7 +124,8 @@ TEST(Lockstep, ExternalStopFlagEndsTheRunCleanly) {
   - {id: sink, type: collector}
 connections:
   - {from: src.out, to: sink.in}
-)", options);
+)",
+               options);
   EXPECT_EQ(r.outcome, RunOutcome::stopped);
   EXPECT_EQ(r.exit_code(), 0);
   EXPECT_TRUE(r.report.contains("sink"));  // finish() ran

@@ -45,7 +45,8 @@ TEST(PluginLoading, GoodPluginRegistersItsTypes) {
 
 TEST(PluginLoading, RefusesALibraryWithoutEntryPoint) {
   const auto file = kBad / "not_a_plugin.so";
-  EXPECT_THAT(refusal(file), HasSubstr(file.string() + " is not a kestrel plugin: it has no kestrel_plugin_descriptor_v1"));
+  EXPECT_THAT(refusal(file),
+              HasSubstr(file.string() + " is not a kestrel plugin: it has no kestrel_plugin_descriptor_v1"));
 }
 
 TEST(PluginLoading, RefusesAnotherAbiMajorNamingBothVersions) {

@@ -96,7 +96,8 @@ nodes:
 connections:
   - {from: src.out, to: slow.in, policy: fifo 1000}
   - {from: slow.out, to: sink.in, policy: fifo 1000}
-)", options);
+)",
+                     options);
   stopper.join();
   EXPECT_EQ(r.outcome, RunOutcome::stopped);
   EXPECT_EQ(r.exit_code(), 0);

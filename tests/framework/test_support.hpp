@@ -14,8 +14,7 @@ namespace kestrel::testing {
 inline PluginHost& test_plugins() {
   static PluginHost* host = [] {
     auto* h = new PluginHost();
-    if (!h->load(KESTREL_TEST_PLUGIN_DIR "/kestrel_test_nodes.so"))
-      ADD_FAILURE() << h->errors().back().message;
+    if (!h->load(KESTREL_TEST_PLUGIN_DIR "/kestrel_test_nodes.so")) ADD_FAILURE() << h->errors().back().message;
     return h;
   }();
   return *host;

@@ -64,7 +64,8 @@ TEST(Experiments, AbPairsSeedsAndNamesTheBetterGraph) {
   const auto& rmse = ab.at("metrics").at("tracking.rmse_m");
   // Same detections on both sides (same seeds, same chain): only the tracker differs.
   EXPECT_EQ(ab.at("metrics").at("detection.recall").at("better"), "equal");
-  EXPECT_NEAR(rmse.at("difference").get<double>(), rmse.at("mean_b").get<double>() - rmse.at("mean_a").get<double>(), 1e-12);
+  EXPECT_NEAR(rmse.at("difference").get<double>(), rmse.at("mean_b").get<double>() - rmse.at("mean_a").get<double>(),
+              1e-12);
   EXPECT_LE(rmse.at("ci95")[0].get<double>(), rmse.at("difference").get<double>());
   EXPECT_GE(rmse.at("ci95")[1].get<double>(), rmse.at("difference").get<double>());
   EXPECT_THAT(read(dir / "ab.md"), ::testing::HasSubstr("| tracking.mota |"));
@@ -74,9 +75,9 @@ TEST(Experiments, AbPairsSeedsAndNamesTheBetterGraph) {
 TEST(Experiments, AbComparesSettingsOfOneGraph) {
   const fs::path dir = fs::temp_directory_path() / "kestrel-ab-settings-test";
   fs::remove_all(dir);
-  ASSERT_EQ(kestrel({"ab", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml",
-                     "--set-a", "tracker.r=0.1", "--set-b", "tracker.r=5.0", "--seeds", "2", "--duration", "1",
-                     "--report", dir.string()}),
+  ASSERT_EQ(kestrel({"ab", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml",
+                     KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--set-a", "tracker.r=0.1", "--set-b",
+                     "tracker.r=5.0", "--seeds", "2", "--duration", "1", "--report", dir.string()}),
             0);
   const auto ab = nlohmann::json::parse(read(dir / "ab.json"));
   EXPECT_EQ(ab.at("set_a"), nlohmann::json::array({"tracker.r=0.1"}));
@@ -86,8 +87,9 @@ TEST(Experiments, AbComparesSettingsOfOneGraph) {
   EXPECT_NE(rmse.at("mean_a").get<double>(), rmse.at("mean_b").get<double>());
   EXPECT_THAT(read(dir / "ab.md"), ::testing::HasSubstr("with tracker.r=5.0"));
   // An override one side's graph does not accept fails before any run.
-  EXPECT_EQ(kestrel({"ab", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml",
-                     "--set-b", "tracker.particles=10", "--report", (dir / "bad").string()}),
-            2);
+  EXPECT_EQ(
+      kestrel({"ab", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml",
+               "--set-b", "tracker.particles=10", "--report", (dir / "bad").string()}),
+      2);
   EXPECT_FALSE(fs::exists(dir / "bad" / "runs"));
 }

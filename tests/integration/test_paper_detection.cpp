@@ -23,9 +23,10 @@ PluginHost& plugins() {
   return *host;
 }
 
-RunResult run_paper_graph(double duration, const std::vector<std::string>& overrides, const std::string& report_dir = {}) {
-  auto built = build_graph(GraphSource::from_file(KESTREL_SOURCE_DIR "/graphs/paper_detection.yaml"), plugins().registry(),
-                           overrides);
+RunResult run_paper_graph(double duration, const std::vector<std::string>& overrides,
+                          const std::string& report_dir = {}) {
+  auto built = build_graph(GraphSource::from_file(KESTREL_SOURCE_DIR "/graphs/paper_detection.yaml"),
+                           plugins().registry(), overrides);
   EXPECT_TRUE(built.graph) << built.diagnostics.str();
   if (!built.graph) return {};
   RunOptions options;

@@ -36,11 +36,11 @@ std::filesystem::path write_csv(const std::string& name, const std::string& text
 TEST(FigureEight, LiesInThePlaneNormalToTheOpticalAxis) {
   const auto camera = geometry::level_camera({0, 0, 2}, 0.0);  // looking along world +x
   const FigureEight f(camera, 5.0, 1.0, 0.5, 12.0);
-  expect_near(f.at(0.0).position, {5, 0, 2});                                   // centre
-  expect_near(f.at(3.0).position, {5, -1, 2});                                  // quarter: 1 m right
-  expect_near(f.at(1.5).position, {5, -std::sqrt(0.5), 1.5});                   // 0.5 m down
-  expect_near(f.at(4.5).position, {5, -std::sqrt(0.5), 2.5});                   // 0.5 m up
-  expect_near(f.at(12.0).position, f.at(0.0).position);                         // periodic
+  expect_near(f.at(0.0).position, {5, 0, 2});                  // centre
+  expect_near(f.at(3.0).position, {5, -1, 2});                 // quarter: 1 m right
+  expect_near(f.at(1.5).position, {5, -std::sqrt(0.5), 1.5});  // 0.5 m down
+  expect_near(f.at(4.5).position, {5, -std::sqrt(0.5), 2.5});  // 0.5 m up
+  expect_near(f.at(12.0).position, f.at(0.0).position);        // periodic
   for (double t : {0.0, 1.0, 2.7, 8.1}) {
     EXPECT_NEAR(camera.to_camera(f.at(t).position).z(), 5.0, 1e-12);
     expect_consistent_velocity(f, t);
@@ -90,8 +90,9 @@ TEST(RecordedFlight, InterpolatesHoldsAndLoops) {
 }
 
 TEST(RecordedFlight, BadFilesNameTheFileAndLine) {
-  EXPECT_THAT([] { RecordedFlight("/nonexistent/flight.csv", false); },
-              ::testing::ThrowsMessage<Error>(::testing::HasSubstr("cannot open trajectory file /nonexistent/flight.csv")));
+  EXPECT_THAT(
+      [] { RecordedFlight("/nonexistent/flight.csv", false); },
+      ::testing::ThrowsMessage<Error>(::testing::HasSubstr("cannot open trajectory file /nonexistent/flight.csv")));
   const auto bad = write_csv("kestrel-bad.csv", "t,x,y,z\n0,0,0,0\n1,1,oops,0\n");
   EXPECT_THAT([&] { RecordedFlight(bad, false); },
               ::testing::ThrowsMessage<Error>(::testing::HasSubstr(bad.string() + ":3: expected four numbers")));
@@ -107,7 +108,8 @@ TEST(IntruderNode, PublishesTruthAtItsRateAndThePlotIsWritten) {
   std::filesystem::remove_all(dir);
   const std::string yaml = R"(nodes:
   - {id: intruder, type: intruder, params: {rate_hz: 30, distance_m: 7.5}}
-  - {id: plot, type: trajectory_plot, params: {output_dir: ")" + dir.string() + R"("}}
+  - {id: plot, type: trajectory_plot, params: {output_dir: ")" +
+                           dir.string() + R"("}}
 connections:
   - {from: intruder.truth, to: plot.truth}
 duration: 2.0

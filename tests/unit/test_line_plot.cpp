@@ -11,8 +11,9 @@ using ::testing::DoubleNear;
 using ::testing::ElementsAre;
 
 TEST(NiceTicks, StepsAreOneTwoOrFiveTimesAPowerOfTen) {
-  EXPECT_THAT(nice_ticks(0.0, 1.0), ElementsAre(0.0, DoubleNear(0.2, 1e-12), DoubleNear(0.4, 1e-12),
-                                                DoubleNear(0.6, 1e-12), DoubleNear(0.8, 1e-12), DoubleNear(1.0, 1e-12)));
+  EXPECT_THAT(nice_ticks(0.0, 1.0),
+              ElementsAre(0.0, DoubleNear(0.2, 1e-12), DoubleNear(0.4, 1e-12), DoubleNear(0.6, 1e-12),
+                          DoubleNear(0.8, 1e-12), DoubleNear(1.0, 1e-12)));
   EXPECT_THAT(nice_ticks(-3.0, 17.0), ElementsAre(0.0, 5.0, 10.0, 15.0));
   EXPECT_THAT(nice_ticks(0.0, 24.0), ElementsAre(0.0, 5.0, 10.0, 15.0, 20.0));
   EXPECT_TRUE(nice_ticks(1.0, 1.0).empty());

@@ -36,9 +36,9 @@ std::pair<cv::Mat, cv::Mat> shifted_pair(int shift) {
 
 TEST(Reprojection, KnownDisparityGivesEquationOne) {
   cv::Mat disparity(480, 640, CV_16S, cv::Scalar(-16));
-  disparity.at<short>(240, 320) = 16 * 10;   // d = 10 px at the principal point
-  disparity.at<short>(100, 500) = 16 * 20;   // d = 20 px off-centre
-  disparity.at<short>(10, 10) = 8;           // d = 0.5 px: Z = 108 m, beyond max depth
+  disparity.at<short>(240, 320) = 16 * 10;  // d = 10 px at the principal point
+  disparity.at<short>(100, 500) = 16 * 20;  // d = 20 px off-centre
+  disparity.at<short>(10, 10) = 8;          // d = 0.5 px: Z = 108 m, beyond max depth
   const auto cloud = reproject(disparity, calibration(), 0.5, 15.0);
   ASSERT_EQ(cloud->size(), 2u);
   // Z = f b / d, X = b (u - cx) / d, Y = b (v - cy) / d.

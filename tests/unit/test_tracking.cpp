@@ -119,7 +119,8 @@ TEST(Associators, HungarianMatchesBruteForceOnRandomScenes) {
   std::uniform_real_distribution<double> coord(-2.0, 2.0);
   std::uniform_int_distribution<int> count(0, 6);
   for (int trial = 0; trial < 300; ++trial) {
-    std::vector<Eigen::Vector3d> tracks(static_cast<std::size_t>(count(rng))), detections(static_cast<std::size_t>(count(rng)));
+    std::vector<Eigen::Vector3d> tracks(static_cast<std::size_t>(count(rng))),
+        detections(static_cast<std::size_t>(count(rng)));
     for (auto& t : tracks) t = {coord(rng), coord(rng), 5.0};
     for (auto& d : detections) d = {coord(rng), coord(rng), 5.0};
     for (const Metric metric : {Metric::euclidean, Metric::mahalanobis}) {
@@ -182,9 +183,10 @@ class FixedFilter final : public TrackFilter {  // the last detection is the est
 };
 
 TrackManager manager(int max_misses, Selection selection = Selection::longest_living) {
-  return TrackManager(std::make_shared<HungarianAssociator>(Metric::euclidean, 1.0),
-                      [](const Eigen::Vector3d& z) { return std::make_unique<FixedFilter>(z); },
-                      TrackManagerOptions{max_misses, selection});
+  return TrackManager(
+      std::make_shared<HungarianAssociator>(Metric::euclidean, 1.0),
+      [](const Eigen::Vector3d& z) { return std::make_unique<FixedFilter>(z); },
+      TrackManagerOptions{max_misses, selection});
 }
 
 Time frame(int k) { return from_seconds(k / 30.0); }
@@ -219,9 +221,10 @@ TEST(TrackManager, BirthDeathAndTheLongestLivingTarget) {
 }
 
 TEST(TrackManager, TentativeTracksAreNotPublishedUntilConfirmed) {
-  TrackManager m(std::make_shared<HungarianAssociator>(Metric::euclidean, 1.0),
-                 [](const Eigen::Vector3d& z) { return std::make_unique<FixedFilter>(z); },
-                 TrackManagerOptions{2, Selection::longest_living, 3});
+  TrackManager m(
+      std::make_shared<HungarianAssociator>(Metric::euclidean, 1.0),
+      [](const Eigen::Vector3d& z) { return std::make_unique<FixedFilter>(z); },
+      TrackManagerOptions{2, Selection::longest_living, 3});
   // A one-frame false alarm at (3, 0, 5) never shows; the real target appears at its third hit.
   EXPECT_TRUE(m.step(frame(0), {{0, 0, 5}, {3, 0, 5}}).items.empty());
   EXPECT_TRUE(m.step(frame(1), {{0, 0, 5}}).items.empty());
@@ -231,8 +234,9 @@ TEST(TrackManager, TentativeTracksAreNotPublishedUntilConfirmed) {
   EXPECT_EQ(out.items[0].id, 1u);
   EXPECT_EQ(*out.selected_id, 1u);
   // Intermittent noise at one place never adds up to a confirmed track: each blip is new.
-  for (int k = 3; k < 9; ++k) out = m.step(frame(k), k % 2 ? std::vector<Eigen::Vector3d>{{0, 0, 5}, {3, 0, 5}}
-                                                          : std::vector<Eigen::Vector3d>{{0, 0, 5}});
+  for (int k = 3; k < 9; ++k)
+    out = m.step(frame(k),
+                 k % 2 ? std::vector<Eigen::Vector3d>{{0, 0, 5}, {3, 0, 5}} : std::vector<Eigen::Vector3d>{{0, 0, 5}});
   ASSERT_EQ(out.items.size(), 1u);
   EXPECT_EQ(out.items[0].id, 1u);
   // A confirmed track keeps its max_misses allowance.

@@ -68,8 +68,8 @@ TEST(EuclideanClusterer, SeparationJustAboveAndBelowTheTolerance) {
   clustering::ClusterOptions options;
   for (const auto& [gap, clusters_expected] : std::vector<std::pair<float, std::size_t>>{{0.49f, 1}, {0.51f, 2}}) {
     auto cloud = std::make_shared<Cloud>();
-    add_line(*cloud, 0.0f, 0.0f, 5.0f, 30, 0.01f);          // ends at x = 0.29
-    add_line(*cloud, 0.29f + gap, 0.0f, 5.0f, 30, 0.01f);   // starts `gap` further on
+    add_line(*cloud, 0.0f, 0.0f, 5.0f, 30, 0.01f);         // ends at x = 0.29
+    add_line(*cloud, 0.29f + gap, 0.0f, 5.0f, 30, 0.01f);  // starts `gap` further on
     const auto clusters = clustering::find_clusters(cloud, options);
     EXPECT_EQ(clusters.detections.size(), clusters_expected) << "gap " << gap;
   }

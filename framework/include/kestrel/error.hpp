@@ -20,8 +20,7 @@ class Error : public std::runtime_error {
  public:
   explicit Error(const std::string& message) : std::runtime_error(message) {}
   Error(SourceLocation where, const std::string& message)
-      : std::runtime_error(where.line > 0 || !where.file.empty() ? where.str() + ": " + message
-                                                                   : message),
+      : std::runtime_error(where.line > 0 || !where.file.empty() ? where.str() + ": " + message : message),
         where_(std::move(where)) {}
 
   const SourceLocation& where() const { return where_; }

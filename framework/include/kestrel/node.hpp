@@ -60,8 +60,8 @@ class Node {
 /// build its components and to ask for a timer.
 class NodeInit {
  public:
-  NodeInit(std::string id, const NodeSpec& spec, const Params& params, const Registry& registry,
-           std::uint64_t seed, Logger& log)
+  NodeInit(std::string id, const NodeSpec& spec, const Params& params, const Registry& registry, std::uint64_t seed,
+           Logger& log)
       : id_(std::move(id)), spec_(spec), params_(params), registry_(registry), seed_(seed), log_(log) {}
 
   const std::string& id() const { return id_; }
@@ -93,8 +93,7 @@ class NodeInit {
   Logger& log() const { return log_; }
 
  private:
-  std::shared_ptr<void> make_component_erased(const std::string& param_name,
-                                              std::string_view kind) const;
+  std::shared_ptr<void> make_component_erased(const std::string& param_name, std::string_view kind) const;
 
   std::string id_;
   const NodeSpec& spec_;
@@ -129,8 +128,7 @@ class Context {
 
   template <MessageType T>
   void publish(const Output<T>& port, std::shared_ptr<const T> message) {
-    publish_erased(port.name, std::shared_ptr<const void>(std::move(message)),
-                   MessageTraits<T>::name);
+    publish_erased(port.name, std::shared_ptr<const void>(std::move(message)), MessageTraits<T>::name);
   }
   template <MessageType T>
   void publish(const Output<T>& port, T message) {
@@ -155,8 +153,7 @@ class Context {
   void request_stop();
 
  private:
-  void publish_erased(std::string_view output, std::shared_ptr<const void> payload,
-                      std::string_view type);
+  void publish_erased(std::string_view output, std::shared_ptr<const void> payload, std::string_view type);
   detail::NodeRuntime& rt_;
 };
 

@@ -18,15 +18,15 @@ class NodeSpec {
 
   template <MessageType T>
   NodeSpec& input(const Input<T>& port, std::string description, InputOptions options = {}) {
-    inputs_.push_back(PortSpec{std::string(port.name), std::string(MessageTraits<T>::name),
-                               std::move(description), options.trigger, options.optional});
+    inputs_.push_back(PortSpec{std::string(port.name), std::string(MessageTraits<T>::name), std::move(description),
+                               options.trigger, options.optional});
     return *this;
   }
 
   template <MessageType T>
   NodeSpec& output(const Output<T>& port, std::string description) {
-    outputs_.push_back(PortSpec{std::string(port.name), std::string(MessageTraits<T>::name),
-                                std::move(description), Trigger::on_message, false});
+    outputs_.push_back(PortSpec{std::string(port.name), std::string(MessageTraits<T>::name), std::move(description),
+                                Trigger::on_message, false});
     return *this;
   }
 
@@ -66,8 +66,7 @@ class NodeSpec {
 /// builds by name from one of its parameters.
 class ComponentSpec {
  public:
-  ComponentSpec(std::string name, std::string summary)
-      : name_(std::move(name)), summary_(std::move(summary)) {}
+  ComponentSpec(std::string name, std::string summary) : name_(std::move(name)), summary_(std::move(summary)) {}
 
   ComponentSpec& param(ParamSpec spec) {
     params_.push_back(std::move(spec));

@@ -25,8 +25,7 @@ struct ComponentConfig {
   std::shared_ptr<const Params> params;
 };
 
-using ParamValue =
-    std::variant<bool, std::int64_t, double, std::string, std::vector<double>, ComponentConfig>;
+using ParamValue = std::variant<bool, std::int64_t, double, std::string, std::vector<double>, ComponentConfig>;
 
 /// Human-readable rendering of a value, as YAML would write it.
 std::string to_string(const ParamValue& value);
@@ -38,8 +37,8 @@ struct ParamSpec {
   std::string unit;
   std::optional<double> min;  ///< inclusive; numbers, integers and each element of a list
   std::optional<double> max;
-  std::vector<std::string> allowed;  ///< for strings: the only accepted values
-  std::string component_kind;        ///< for components: e.g. "associator"
+  std::vector<std::string> allowed;   ///< for strings: the only accepted values
+  std::string component_kind;         ///< for components: e.g. "associator"
   std::optional<std::size_t> length;  ///< for lists: the exact number of elements
   std::string description;
 
@@ -74,21 +73,32 @@ struct ParamSpec {
 namespace detail {
 template <class T>
 constexpr ParamType param_type_of() {
-  if constexpr (std::is_same_v<T, bool>) return ParamType::boolean;
-  else if constexpr (std::is_integral_v<T>) return ParamType::integer;
-  else if constexpr (std::is_floating_point_v<T>) return ParamType::number;
-  else if constexpr (std::is_convertible_v<T, std::string>) return ParamType::string;
-  else if constexpr (std::is_same_v<T, std::vector<double>>) return ParamType::number_list;
-  else static_assert(sizeof(T) == 0, "unsupported parameter type");
+  if constexpr (std::is_same_v<T, bool>)
+    return ParamType::boolean;
+  else if constexpr (std::is_integral_v<T>)
+    return ParamType::integer;
+  else if constexpr (std::is_floating_point_v<T>)
+    return ParamType::number;
+  else if constexpr (std::is_convertible_v<T, std::string>)
+    return ParamType::string;
+  else if constexpr (std::is_same_v<T, std::vector<double>>)
+    return ParamType::number_list;
+  else
+    static_assert(sizeof(T) == 0, "unsupported parameter type");
 }
 
 template <class T>
 ParamValue to_param_value(T value) {
-  if constexpr (std::is_same_v<T, bool>) return ParamValue(value);
-  else if constexpr (std::is_integral_v<T>) return ParamValue(static_cast<std::int64_t>(value));
-  else if constexpr (std::is_floating_point_v<T>) return ParamValue(static_cast<double>(value));
-  else if constexpr (std::is_convertible_v<T, std::string>) return ParamValue(std::string(value));
-  else return ParamValue(std::move(value));
+  if constexpr (std::is_same_v<T, bool>)
+    return ParamValue(value);
+  else if constexpr (std::is_integral_v<T>)
+    return ParamValue(static_cast<std::int64_t>(value));
+  else if constexpr (std::is_floating_point_v<T>)
+    return ParamValue(static_cast<double>(value));
+  else if constexpr (std::is_convertible_v<T, std::string>)
+    return ParamValue(std::string(value));
+  else
+    return ParamValue(std::move(value));
 }
 }  // namespace detail
 

@@ -41,8 +41,7 @@ T Params::get(const std::string& name) const {
     if (auto* i = std::get_if<std::int64_t>(&v)) {
       if (*i < static_cast<std::int64_t>(std::numeric_limits<T>::min()) ||
           static_cast<std::uint64_t>(*i) > static_cast<std::uint64_t>(std::numeric_limits<T>::max()))
-        throw Error("parameter '" + name + "' = " + std::to_string(*i) +
-                    " does not fit the node's integer type");
+        throw Error("parameter '" + name + "' = " + std::to_string(*i) + " does not fit the node's integer type");
       return static_cast<T>(*i);
     }
   } else if constexpr (std::is_floating_point_v<T>) {
@@ -60,8 +59,7 @@ T Params::get(const std::string& name) const {
   } else {
     static_assert(sizeof(T) == 0, "unsupported parameter type");
   }
-  throw Error("parameter '" + name + "' holds " + to_string(v) +
-              ", which is not of the type the node asked for");
+  throw Error("parameter '" + name + "' holds " + to_string(v) + ", which is not of the type the node asked for");
 }
 
 }  // namespace kestrel

@@ -57,42 +57,44 @@ void register_component(Registry& r) {
       ::kestrel::detail::add_registration(&::kestrel::detail::register_node<NODE_CLASS>); \
   }
 
-#define KESTREL_REGISTER_COMPONENT(INTERFACE, COMPONENT_CLASS)                               \
-  namespace {                                                                                \
-  [[maybe_unused]] const bool KESTREL_CONCAT(kestrel_registered_component_, __LINE__) =      \
-      ::kestrel::detail::add_registration(                                                   \
-          &::kestrel::detail::register_component<INTERFACE, COMPONENT_CLASS>);               \
+#define KESTREL_REGISTER_COMPONENT(INTERFACE, COMPONENT_CLASS)                                                 \
+  namespace {                                                                                                  \
+  [[maybe_unused]] const bool KESTREL_CONCAT(kestrel_registered_component_, __LINE__) =                        \
+      ::kestrel::detail::add_registration(&::kestrel::detail::register_component<INTERFACE, COMPONENT_CLASS>); \
   }
 
-#define KESTREL_REGISTER_MESSAGE(MESSAGE_TYPE)                                          \
-  namespace {                                                                           \
-  [[maybe_unused]] const bool KESTREL_CONCAT(kestrel_registered_message_, __LINE__) =   \
-      ::kestrel::detail::add_registration(                                              \
-          [](::kestrel::Registry& r) { r.add_message<MESSAGE_TYPE>(); });               \
+#define KESTREL_REGISTER_MESSAGE(MESSAGE_TYPE)                                                            \
+  namespace {                                                                                             \
+  [[maybe_unused]] const bool KESTREL_CONCAT(kestrel_registered_message_, __LINE__) =                     \
+      ::kestrel::detail::add_registration([](::kestrel::Registry& r) { r.add_message<MESSAGE_TYPE>(); }); \
   }
 
 /// The plugin's C entry point. Generated once per plugin by kestrel_add_plugin(); never written
 /// by hand.
-#define KESTREL_PLUGIN_ENTRY(NAME, VERSION, DESCRIPTION)                                        \
-  namespace {                                                                                   \
-  int kestrel_register_plugin(void* registry, char* error, size_t error_size) {                \
-    try {                                                                                       \
-      for (auto& registration : ::kestrel::detail::plugin_registrations())                     \
-        registration(*static_cast<::kestrel::Registry*>(registry));                            \
-      return 0;                                                                                 \
-    } catch (const std::exception& e) {                                                         \
-      if (error_size > 0) {                                                                     \
-        std::snprintf(error, error_size, "%s", e.what());                                       \
-      }                                                                                         \
-      return 1;                                                                                 \
-    }                                                                                           \
-  }                                                                                             \
-  const kestrel_plugin_descriptor kestrel_descriptor = {                                        \
-      sizeof(kestrel_plugin_descriptor), KESTREL_VERSION_MAJOR, KESTREL_ABI_TAG,                \
-      KESTREL_VERSION_STRING,            NAME,                  VERSION,                        \
-      DESCRIPTION,                       &kestrel_register_plugin};                             \
-  }                                                                                             \
-  extern "C" __attribute__((visibility("default"))) const kestrel_plugin_descriptor*           \
-  kestrel_plugin_descriptor_v1(void) {                                                          \
-    return &kestrel_descriptor;                                                                 \
+#define KESTREL_PLUGIN_ENTRY(NAME, VERSION, DESCRIPTION)                                                           \
+  namespace {                                                                                                      \
+  int kestrel_register_plugin(void* registry, char* error, size_t error_size) {                                    \
+    try {                                                                                                          \
+      for (auto& registration : ::kestrel::detail::plugin_registrations())                                         \
+        registration(*static_cast<::kestrel::Registry*>(registry));                                                \
+      return 0;                                                                                                    \
+    } catch (const std::exception& e) {                                                                            \
+      if (error_size > 0) {                                                                                        \
+        std::snprintf(error, error_size, "%s", e.what());                                                          \
+      }                                                                                                            \
+      return 1;                                                                                                    \
+    }                                                                                                              \
+  }                                                                                                                \
+  const kestrel_plugin_descriptor kestrel_descriptor = {sizeof(kestrel_plugin_descriptor),                         \
+                                                        KESTREL_VERSION_MAJOR,                                     \
+                                                        KESTREL_ABI_TAG,                                           \
+                                                        KESTREL_VERSION_STRING,                                    \
+                                                        NAME,                                                      \
+                                                        VERSION,                                                   \
+                                                        DESCRIPTION,                                               \
+                                                        &kestrel_register_plugin};                                 \
+  }                                                                                                                \
+  extern "C" __attribute__((visibility("default"))) const kestrel_plugin_descriptor* kestrel_plugin_descriptor_v1( \
+      void) {                                                                                                      \
+    return &kestrel_descriptor;                                                                                    \
   }

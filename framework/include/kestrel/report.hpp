@@ -15,8 +15,7 @@ class Report {
   /// Sets the top-level section `key` of report.json (e.g. "detection"). `markdown`, if given,
   /// is the section's text in report.md; otherwise the JSON is rendered as a table. A key can be
   /// owned by one node only; a second owner is an error.
-  void set_section(const std::string& owner, const std::string& key, nlohmann::json value,
-                   std::string markdown = {});
+  void set_section(const std::string& owner, const std::string& key, nlohmann::json value, std::string markdown = {});
 
   /// Where nodes may write files that belong with the report (PNG images, CSV). Empty when the
   /// run was started without --report.

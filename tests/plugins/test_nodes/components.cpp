@@ -1,7 +1,6 @@
 // A component kind for the tests: strategies a node builds by name from its parameters.
-#include <kestrel/plugin.hpp>
-
 #include <algorithm>
+#include <kestrel/plugin.hpp>
 
 #include "test_messages.hpp"
 

@@ -1,8 +1,7 @@
 // Sinks that record what reached them into the run report.
-#include <kestrel/plugin.hpp>
-
 #include <chrono>
 #include <cstring>
+#include <kestrel/plugin.hpp>
 #include <kestrel/runtime/histogram.hpp>
 
 #include "test_messages.hpp"
@@ -32,11 +31,9 @@ class Collector final : public Node {
     }
   }
   void finish(Context& ctx) override {
-    ctx.set_report_section(ctx.id(), {{"count", count_},
-                                      {"checksum", checksum_},
-                                      {"values", values_},
-                                      {"indices", indices_},
-                                      {"times_s", stamps_}});
+    ctx.set_report_section(
+        ctx.id(),
+        {{"count", count_}, {"checksum", checksum_}, {"values", values_}, {"indices", indices_}, {"times_s", stamps_}});
   }
 
  private:
@@ -64,9 +61,10 @@ class BlobSink final : public Node {
     latency_.record(std::chrono::steady_clock::now().time_since_epoch().count() - blob->created_ns);
   }
   void finish(Context& ctx) override {
-    ctx.set_report_section(ctx.id(), {{"count", count_},
-                                      {"bytes_copied", bytes_copied_},
-                                      {"latency_ns", {{"p50", latency_.quantile(0.5)}, {"p99", latency_.quantile(0.99)}}}});
+    ctx.set_report_section(ctx.id(),
+                           {{"count", count_},
+                            {"bytes_copied", bytes_copied_},
+                            {"latency_ns", {{"p50", latency_.quantile(0.5)}, {"p99", latency_.quantile(0.99)}}}});
   }
 
  private:

@@ -1,7 +1,6 @@
 // Timer-driven sources of numbers and blobs.
-#include <kestrel/plugin.hpp>
-
 #include <chrono>
+#include <kestrel/plugin.hpp>
 
 #include "test_messages.hpp"
 
@@ -21,7 +20,8 @@ class CounterSource final : public Node {
         .param(param("noise", 0.0).at_least(0.0).describe("standard deviation of noise added to each value"));
   }
   explicit CounterSource(NodeInit& init)
-      : count_(init.param<std::int64_t>("count")), noise_(0.0, std::max(init.param<double>("noise"), 1e-300)),
+      : count_(init.param<std::int64_t>("count")),
+        noise_(0.0, std::max(init.param<double>("noise"), 1e-300)),
         noisy_(init.param<double>("noise") > 0) {
     init.set_rate(init.param<double>("rate_hz"));
   }
@@ -51,7 +51,8 @@ class BlobSource final : public Node {
         .param(param("reuse", false).describe("publish one shared blob again and again instead of a new one"));
   }
   explicit BlobSource(NodeInit& init)
-      : size_(static_cast<std::size_t>(init.param<std::int64_t>("size_bytes"))), count_(init.param<std::int64_t>("count")) {
+      : size_(static_cast<std::size_t>(init.param<std::int64_t>("size_bytes"))),
+        count_(init.param<std::int64_t>("count")) {
     init.set_rate(init.param<double>("rate_hz"));
     if (init.param<bool>("reuse")) shared_ = make();
   }

@@ -48,8 +48,10 @@ class Scale final : public Node {
         .param(param("enabled", true).describe("false passes numbers through"));
   }
   explicit Scale(NodeInit& init)
-      : factor_(init.param<double>("factor")), divide_(init.param<std::string>("mode") == "divide"),
-        offsets_(init.param<std::vector<double>>("offsets")), enabled_(init.param<bool>("enabled")) {}
+      : factor_(init.param<double>("factor")),
+        divide_(init.param<std::string>("mode") == "divide"),
+        offsets_(init.param<std::vector<double>>("offsets")),
+        enabled_(init.param<bool>("enabled")) {}
   void process(Context& ctx) override {
     Number n = *ctx.get(kIn);
     if (enabled_) n.value = divide_ ? n.value / factor_ : n.value * factor_;
@@ -94,7 +96,8 @@ class Faulty final : public Node {
     return NodeSpec("faulty", "Passes numbers through but throws on chosen ones")
         .input(kIn, "numbers")
         .output(kOut, "numbers that did not fail")
-        .param(param("fail_every", 0).at_least(0).describe("throw when index % fail_every == fail_every - 1; 0 = never"))
+        .param(
+            param("fail_every", 0).at_least(0).describe("throw when index % fail_every == fail_every - 1; 0 = never"))
         .param(param("fail_on_start", false).describe("throw from the constructor"));
   }
   explicit Faulty(NodeInit& init) : every_(init.param<std::int64_t>("fail_every")) {

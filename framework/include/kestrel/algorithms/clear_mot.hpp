@@ -34,8 +34,8 @@ class ClearMotAccumulator {
   const std::vector<std::pair<int, int>>& last_matches() const { return last_matches_; }
 
  private:
-  std::map<std::uint64_t, std::uint64_t> last_match_;           // object -> hypothesis it last matched
-  std::map<std::uint64_t, std::vector<char>> tracked_;          // object -> tracked flag per frame present
+  std::map<std::uint64_t, std::uint64_t> last_match_;   // object -> hypothesis it last matched
+  std::map<std::uint64_t, std::vector<char>> tracked_;  // object -> tracked flag per frame present
   std::map<std::pair<std::uint64_t, std::uint64_t>, std::uint64_t> co_valid_;  // identity pairs
   std::map<std::uint64_t, std::uint64_t> object_frames_, hypothesis_frames_;
   std::vector<std::pair<int, int>> last_matches_;

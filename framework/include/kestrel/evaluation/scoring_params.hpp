@@ -18,7 +18,8 @@ struct ScoringParams {
 /// match_radius_m, skip_first_s, max_lag_s, lag_step_s and section (default `section`).
 inline NodeSpec& add_scoring_params(NodeSpec& spec, const std::string& section, const std::string& radius_description) {
   return spec.param(param("match_radius_m", 1.0).range(0.0, 100.0).with_unit("m").describe(radius_description))
-      .param(param("skip_first_s", 0.0).range(0.0, 1e6).with_unit("s").describe("frames captured earlier are not scored"))
+      .param(
+          param("skip_first_s", 0.0).range(0.0, 1e6).with_unit("s").describe("frames captured earlier are not scored"))
       .param(param("max_lag_s", 1.0).range(0.0, 100.0).with_unit("s").describe("lag search range"))
       .param(param("lag_step_s", 0.001).range(1e-6, 1.0).with_unit("s").describe("lag search resolution"))
       .param(param("section", section).describe("report.json key"));

@@ -22,7 +22,9 @@ class TruthPairing {
   }
 
   /// `arrival_s`: when the item reached the evaluator (the lag's time base).
-  void add(Time stamp, std::shared_ptr<const T> item, double arrival_s) { waiting_[stamp] = {std::move(item), arrival_s}; }
+  void add(Time stamp, std::shared_ptr<const T> item, double arrival_s) {
+    waiting_[stamp] = {std::move(item), arrival_s};
+  }
 
   /// Calls score(item, truth, arrival_s) for every item whose truth is here, in capture order,
   /// and forgets them (and older truth).

@@ -10,9 +10,9 @@ namespace kestrel::msg {
 
 struct ActuatorCommand {
   Time stamp{0};
-  double thrust_n = 0.0;                             ///< along body z
+  double thrust_n = 0.0;                                ///< along body z
   Eigen::Vector3d torque_nm = Eigen::Vector3d::Zero();  ///< body frame
-  std::vector<double> rotor_speeds_rad_s;            ///< empty if the vehicle takes wrench input
+  std::vector<double> rotor_speeds_rad_s;               ///< empty if the vehicle takes wrench input
 };
 
 }  // namespace kestrel::msg

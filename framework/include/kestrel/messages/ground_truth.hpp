@@ -13,7 +13,7 @@ struct GroundTruthObject {
   Eigen::Vector3d position_world = Eigen::Vector3d::Zero();   ///< metres
   Eigen::Vector3d position_camera = Eigen::Vector3d::Zero();  ///< optical frame, metres
   Eigen::Vector3d velocity_world = Eigen::Vector3d::Zero();   ///< m/s
-  bool in_view = true;  ///< inside the camera's field of view and depth range
+  bool in_view = true;                                        ///< inside the camera's field of view and depth range
 };
 
 struct GroundTruth {

@@ -10,12 +10,11 @@
 namespace kestrel::msg {
 
 struct PointCloud {
-  Time stamp{0};  ///< capture time of the data the points came from
+  Time stamp{0};                 ///< capture time of the data the points came from
   std::string frame = "camera";  ///< camera: x right, y down, z forward (optical frame)
   pcl::PointCloud<pcl::PointXYZ>::ConstPtr points;
 };
 
 }  // namespace kestrel::msg
 
-KESTREL_MESSAGE(kestrel::msg::PointCloud, "kestrel.PointCloud",
-                "PCL XYZ point cloud with capture stamp and frame");
+KESTREL_MESSAGE(kestrel::msg::PointCloud, "kestrel.PointCloud", "PCL XYZ point cloud with capture stamp and frame");

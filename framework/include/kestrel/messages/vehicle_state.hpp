@@ -9,13 +9,12 @@ namespace kestrel::msg {
 
 struct VehicleState {
   Time stamp{0};
-  Eigen::Vector3d position = Eigen::Vector3d::Zero();  ///< world frame (z up), metres
-  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  ///< world frame, m/s
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();               ///< world frame (z up), metres
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();               ///< world frame, m/s
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  ///< body to world
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();       ///< body frame, rad/s
 };
 
 }  // namespace kestrel::msg
 
-KESTREL_MESSAGE(kestrel::msg::VehicleState, "kestrel.VehicleState",
-                "vehicle pose, velocity and body rates (odometry)");
+KESTREL_MESSAGE(kestrel::msg::VehicleState, "kestrel.VehicleState", "vehicle pose, velocity and body rates (odometry)");

@@ -59,7 +59,7 @@ struct GraphConfig {
   double real_time_factor = 1.0;  ///< lockstep with a wall clock: sim seconds per wall second
   std::uint64_t seed = 0;
   ErrorPolicy on_error = ErrorPolicy::stop;
-  std::optional<double> duration_s;  ///< run length; sim seconds (lockstep) or wall seconds
+  std::optional<double> duration_s;                 ///< run length; sim seconds (lockstep) or wall seconds
   std::vector<std::filesystem::path> plugin_paths;  ///< resolved against the graph's folder
   std::vector<NodeConfig> nodes;
   std::vector<ConnectionConfig> connections;

@@ -15,10 +15,10 @@
 namespace kestrel {
 
 struct RunOptions {
-  std::optional<double> duration_s;     ///< overrides the graph's duration
-  std::optional<std::uint64_t> seed;    ///< overrides the graph's seed
-  std::filesystem::path report_dir;     ///< write report.json and report.md here if set
-  bool progress = false;                ///< a status line on stderr every second
+  std::optional<double> duration_s;   ///< overrides the graph's duration
+  std::optional<std::uint64_t> seed;  ///< overrides the graph's seed
+  std::filesystem::path report_dir;   ///< write report.json and report.md here if set
+  bool progress = false;              ///< a status line on stderr every second
   /// Set from elsewhere (a signal handler, a test) to stop the run cleanly.
   const std::atomic<bool>* stop_flag = nullptr;
 };

@@ -34,7 +34,7 @@ using FilterFactory = std::function<std::unique_ptr<TrackFilter>(const Eigen::Ve
 enum class Selection {
   longest_living,  ///< the paper's rule: noise tracks are short-lived
   most_hits,
-  nearest,         ///< closest to the camera
+  nearest,  ///< closest to the camera
 };
 
 /// "longest_living", "most_hits" or "nearest".
