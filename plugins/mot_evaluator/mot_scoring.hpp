@@ -16,7 +16,7 @@ namespace kestrel::evaluation {
 
 /// The selected target, frame by frame.
 struct TargetScore {
-  std::uint64_t frames = 0;    ///< frames with at least one intruder
+  std::uint64_t frames = 0;    ///< frames with at least one intruder in view
   std::uint64_t on = 0;        ///< the target is within the match radius of an intruder
   std::uint64_t off = 0;       ///< a target is selected but no intruder is near it
   std::uint64_t missing = 0;   ///< an intruder is there but no target is selected
@@ -38,12 +38,14 @@ class TrackingScorer {
  public:
   explicit TrackingScorer(double match_radius_m) : radius_(match_radius_m) {}
 
-  /// One frame. `arrival_s` is when the tracks were available (the lag's time base).
+  /// One frame. `arrival_s` is when the tracks were available (the lag's time base). Objects out
+  /// of view are neither missed nor found, and a track on one is not a false positive.
   void add_frame(const msg::Tracks& tracks, const msg::GroundTruth& truth, double arrival_s);
 
   TrackingSummary summary(double max_lag_s = 1.0, double lag_step_s = 0.001) const;
 
  private:
+  std::vector<bool> set_aside(const msg::Tracks& tracks, const msg::GroundTruth& truth) const;
   void score_target(const msg::GroundTruth& truth, const msg::Track* selected);
 
   double radius_;

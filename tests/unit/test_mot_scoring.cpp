@@ -111,3 +111,36 @@ TEST(TrackingScorer, ScoresTheTargetOffAndMissing) {
   EXPECT_EQ(s.selected_frames, 6u);
   EXPECT_NEAR(s.rmse, 0.05, 1e-12);
 }
+
+// Intruder 1 is in view for frames 0-4 and leaves the view for frames 5-9; intruder 2 is in view
+// throughout. Track 7 follows intruder 1 all along (coasting out of view), track 8 intruder 2,
+// and track 9 is noise. Out of view, intruder 1 is neither missed nor found, and track 7 is not
+// a false positive; the noise track is, in every frame.
+TEST(TrackingScorer, AnIntruderOutOfViewIsNeitherMissedNorFound) {
+  TrackingScorer scorer(1.0);
+  for (int k = 0; k < 10; ++k) {
+    msg::GroundTruth truth;
+    truth.stamp = from_seconds(k / 30.0);
+    truth.objects = {object_at(1, -3.0), object_at(2, 1.0)};
+    truth.objects[0].in_view = k < 5;
+    msg::Tracks tracks;
+    tracks.stamp = truth.stamp;
+    tracks.items = {track_at(7, -3.1), track_at(8, 1.0), track_at(9, 6.0)};
+    tracks.selected_id = 7;
+    scorer.add_frame(tracks, truth, k / 30.0);
+  }
+  const auto s = scorer.summary();
+  EXPECT_EQ(s.mot.objects, 15u);  // 2 x 5 in view + 1 x 5
+  EXPECT_EQ(s.mot.fn, 0u);
+  EXPECT_EQ(s.mot.fp, 10u);  // the noise track only
+  EXPECT_EQ(s.mot.idsw, 0u);
+  EXPECT_EQ(s.mot.fragmentations, 0u);
+  // The target (track 7) stays on intruder 1, seen or not: on target in all 10 frames (each has
+  // an intruder in view). Its RMSE covers the 5 frames intruder 1 was scored.
+  EXPECT_EQ(s.target.frames, 10u);
+  EXPECT_EQ(s.target.on, 10u);
+  EXPECT_EQ(s.target.off, 0u);
+  EXPECT_EQ(s.target.missing, 0u);
+  EXPECT_EQ(s.selected_frames, 5u);
+  EXPECT_NEAR(s.rmse, 0.1, 1e-12);
+}
