@@ -5,10 +5,24 @@
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 
 #include "kestrel/error.hpp"
 
 namespace kestrel::tracking {
+
+namespace {
+
+// MRPT resamples with one process-wide generator. Each update takes it under this lock and
+// reseeds it from the track's own generator, so that a track's random stream depends on its seed
+// alone (lockstep runs reproduce whatever the other tracks do) and two tracker nodes on two
+// realtime threads never use it at once.
+std::mutex& mrpt_generator_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+}  // namespace
 
 mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm resampling_method(const std::string& name) {
   using PF = mrpt::bayes::CParticleFilter;
@@ -27,9 +41,6 @@ ParticleTrackFilter::ParticleTrackFilter(const Eigen::Vector3d& z, const Particl
   filter_.m_options.resamplingMethod = resampling_method(options.resampling);
   filter_.m_options.BETA = options.resample_below_ess;
   filter_.m_options.sampleSize = static_cast<unsigned>(options.particles);
-  // MRPT resamples with its own generator: seed it so lockstep runs reproduce.
-  mrpt::random::getRandomGenerator().randomize(static_cast<std::uint32_t>(seed));
-
   // Particles drawn from the paper's prior: N(z, p diag(1, 900, 30.25)) per axis.
   const Eigen::LLT<Covariance> prior(initial_covariance(options.p));
   std::normal_distribution<double> unit(0.0, 1.0);
@@ -71,6 +82,8 @@ void ParticleTrackFilter::update(const Eigen::Vector3d& z) {
   // than the cloud, as just after birth, weighting by the whole likelihood leaves a handful of
   // particles. The likelihood is then applied in tempered stages, each as large as keeps half the
   // particles effective, with resampling and regularisation in between.
+  const std::lock_guard<std::mutex> lock(mrpt_generator_mutex());
+  mrpt::random::getRandomGenerator().randomize(static_cast<std::uint32_t>(rng_()));
   double remaining = 1.0;
   for (int stage = 0; remaining > 0.0; ++stage) {
     const bool last_allowed = stage + 1 >= options_.max_correction_stages;

@@ -123,3 +123,25 @@ TEST(ParticleTrackFilter, ProgressiveCorrectionKeepsASharpDetectionFromCollapsin
   }
   EXPECT_GE(plain_lost, 1);  // the plain update lost the target (metres off) in some runs
 }
+
+// MRPT resamples with a process-wide generator; each track reseeds it from its own stream, so a
+// track's estimate does not depend on what other tracks did in between (the order of tracks and
+// nodes cannot change a lockstep run).
+TEST(ParticleTrackFilter, TracksDoNotShareARandomStream) {
+  auto detection = [](int k) { return Eigen::Vector3d(0.02 * k, 0.0, 5.0); };
+  ParticleOptions o;
+  o.r = 0.05;  // sharp enough that MRPT resamples
+  ParticleTrackFilter alone({0, 0, 5}, o, 11);
+  for (int k = 1; k <= 15; ++k) {
+    alone.predict(1.0 / 30);
+    alone.update(detection(k));
+  }
+  ParticleTrackFilter a({0, 0, 5}, o, 11), other({2, 0, 6}, o, 12);
+  for (int k = 1; k <= 15; ++k) {
+    other.predict(1.0 / 30);
+    other.update({2.0, 0.01 * k, 6.0});
+    a.predict(1.0 / 30);
+    a.update(detection(k));
+  }
+  EXPECT_EQ(Eigen::VectorXd(a.state()), Eigen::VectorXd(alone.state()));
+}
