@@ -122,16 +122,43 @@ void draw_panel(cv::Mat& img, const Panel& panel, cv::Rect area) {
     flush();
   }
 
-  // Legend, top right inside the plot, on white so curves do not hide it.
-  int labelled = 0;
-  for (const auto& s : panel.series) labelled += s.label.empty() ? 0 : 1;
-  if (labelled > 0)
-    cv::rectangle(img, cv::Rect(plot.x + plot.width - 196, plot.y + 4, 190, 18 * labelled + 6),
-                  cv::Scalar(255, 255, 255), cv::FILLED);
-  int y = plot.y + 18;
+  // Legend inside the plot, on white so curves do not hide it, in the corner that covers the
+  // fewest data points (top right when there is a tie).
+  int labelled = 0, text_width = 0;
   for (const auto& s : panel.series) {
     if (s.label.empty()) continue;
-    const int x = plot.x + plot.width - 190;
+    ++labelled;
+    int baseline = 0;
+    text_width = std::max(text_width, cv::getTextSize(s.label, kFont, 0.45, 1, &baseline).width);
+  }
+  if (labelled == 0) return;
+  const cv::Size box(std::min(plot.width - 8, text_width + 42), 18 * labelled + 6);
+  const cv::Rect corners[] = {
+      {plot.x + plot.width - box.width - 4, plot.y + 4, box.width, box.height},
+      {plot.x + 4, plot.y + 4, box.width, box.height},
+      {plot.x + plot.width - box.width - 4, plot.y + plot.height - box.height - 4, box.width, box.height},
+      {plot.x + 4, plot.y + plot.height - box.height - 4, box.width, box.height}};
+  auto covered = [&](const cv::Rect& r) {
+    int n = 0;
+    for (const auto& s : panel.series)
+      for (std::size_t k = 0; k < std::min(s.x.size(), s.y.size()); ++k)
+        if (std::isfinite(s.x[k]) && std::isfinite(s.y[k]) &&
+            r.contains(cv::Point(static_cast<int>(std::lround(px(s.x[k]))), static_cast<int>(std::lround(py(s.y[k]))))))
+          ++n;
+    return n;
+  };
+  cv::Rect legend = corners[0];
+  int least = covered(legend);
+  for (const auto& r : corners)
+    if (const int n = covered(r); n < least) {
+      least = n;
+      legend = r;
+    }
+  cv::rectangle(img, legend, cv::Scalar(255, 255, 255), cv::FILLED);
+  int y = legend.y + 14;
+  for (const auto& s : panel.series) {
+    if (s.label.empty()) continue;
+    const int x = legend.x + 6;
     cv::line(img, {x, y - 5}, {x + 24, y - 5}, bgr(s.color), 3, cv::LINE_AA);
     put_text(img, s.label, {x + 30, y}, 0.45, kInk);
     y += 18;

@@ -42,3 +42,37 @@ TEST(SavePng, DrawsEachPanelAndItsSeries) {
   EXPECT_GT(red, 200);
   EXPECT_THROW(save_png("/nonexistent-dir/x.png", {panel}), kestrel::Error);
 }
+
+// The legend goes to the corner with the fewest data points: a curve ending in the top-right
+// corner, where the legend used to sit, stays visible.
+TEST(SavePng, TheLegendDoesNotHideTheData) {
+  const auto file = std::filesystem::temp_directory_path() / "kestrel-plot-legend-test.png";
+  auto blue_pixels = [&](const std::string& label) {
+    Panel panel;
+    Series climbing;  // unlabelled: no swatch of its colour in the legend
+    climbing.color = Color{0, 0, 255};
+    climbing.style = Series::Style::points;
+    for (int k = 0; k <= 10; ++k) {
+      climbing.x.push_back(k);
+      climbing.y.push_back(k * k);
+    }
+    Series named;
+    named.label = label;
+    named.color = Color{0, 200, 0};
+    named.x = {0, 10};
+    named.y = {50, 50};
+    panel.series = {climbing, named};
+    save_png(file, {panel}, 600, 300);
+    const cv::Mat img = cv::imread(file.string());
+    int n = 0;
+    for (int r = 0; r < img.rows; ++r)
+      for (int c = 0; c < img.cols; ++c) {
+        const auto p = img.at<cv::Vec3b>(r, c);
+        if (p[0] > 200 && p[1] < 80 && p[2] < 80) ++n;
+      }
+    return n;
+  };
+  const int without_legend = blue_pixels("");
+  EXPECT_GT(without_legend, 100);
+  EXPECT_EQ(blue_pixels("a long legend label"), without_legend);
+}
