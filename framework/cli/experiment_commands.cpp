@@ -232,6 +232,7 @@ int ab_command(const AbArgs& args) {
 
     // Paired by seed: the same scenario and noise for both graphs.
     std::map<std::string, std::vector<std::pair<double, double>>> pairs;
+    std::map<std::string, std::vector<int>> pair_seeds;  // the seed of each pair, for the plot
     std::size_t failed = 0;
     for (int s = 0; s < args.seeds; ++s) {
       const auto& a = results[static_cast<std::size_t>(2 * s)];
@@ -242,7 +243,10 @@ int ab_command(const AbArgs& args) {
       }
       const auto ma = report_metrics(a.report), mb = report_metrics(b.report);
       for (const auto& [k, va] : ma)
-        if (auto it = mb.find(k); it != mb.end()) pairs[k].emplace_back(va, it->second);
+        if (auto it = mb.find(k); it != mb.end()) {
+          pairs[k].emplace_back(va, it->second);
+          pair_seeds[k].push_back(s + 1);
+        }
     }
     nlohmann::json json = {{"a", args.graph_a},         {"b", args.graph_b},
                            {"set", args.overrides},     {"set_a", args.overrides_a},
@@ -257,6 +261,7 @@ int ab_command(const AbArgs& args) {
         "|\n|---|---:|---:|---:|---|---|\n",
         described(args.graph_a, args.overrides_a), described(args.graph_b, args.overrides_b), args.seeds,
         args.overrides.empty() ? "" : fmt::format(", both with {}", fmt::join(args.overrides, ", ")));
+    std::vector<plot::Panel> panels;  // per-seed values of the metrics that differ, up to four
     for (const auto& [metric, values] : pairs) {
       const int direction = better_direction(metric);
       if (direction == 0 || !headline(metric)) continue;
@@ -282,9 +287,25 @@ int ab_command(const AbArgs& args) {
           {"mean_a", ma}, {"mean_b", mb}, {"difference", md_}, {"ci95", {lo, hi}}, {"better", better}};
       md += fmt::format("| {} | {:.4g} | {:.4g} | {:+.4g} | [{:+.4g}, {:+.4g}] | {} |\n", metric, ma, mb, md_, lo, hi,
                         better);
+      if (better != "equal" && panels.size() < 4) {
+        plot::Panel panel{fmt::format("{} per seed (better: {})", metric, better), "seed", metric, {}};
+        for (const auto& [name, side] : {std::pair{"A", 0}, std::pair{"B", 1}}) {
+          plot::Series series{name, {}, {}, plot::Series::Style::points, plot::palette(side), 3};
+          for (std::size_t i = 0; i < values.size(); ++i) {
+            series.x.push_back(pair_seeds[metric][i]);
+            series.y.push_back(side == 0 ? values[i].first : values[i].second);
+          }
+          panel.series.push_back(series);
+        }
+        panels.push_back(panel);
+      }
     }
     if (failed) md += fmt::format("\n{} seed(s) left out: a run failed (see runs/*/run.log).\n", failed);
     std::filesystem::create_directories(dir);
+    if (!panels.empty()) {
+      plot::save_png(dir / "ab.png", panels, 900, 260);
+      md += "\n![A and B seed by seed](ab.png)\n";
+    }
     write(dir / "ab.md", md);
     write(dir / "ab.json", json.dump(2) + "\n");
     std::fputs(md.c_str(), stdout);

@@ -69,6 +69,9 @@ TEST(Experiments, AbPairsSeedsAndNamesTheBetterGraph) {
   EXPECT_LE(rmse.at("ci95")[0].get<double>(), rmse.at("difference").get<double>());
   EXPECT_GE(rmse.at("ci95")[1].get<double>(), rmse.at("difference").get<double>());
   EXPECT_THAT(read(dir / "ab.md"), ::testing::HasSubstr("| tracking.mota |"));
+  // The metrics that differ, seed by seed, as a picture.
+  EXPECT_TRUE(fs::exists(dir / "ab.png"));
+  EXPECT_THAT(read(dir / "ab.md"), ::testing::HasSubstr("![A and B seed by seed](ab.png)"));
 }
 
 // One graph on both sides, a parameter changed on one: the A/B of a single tracker setting.
