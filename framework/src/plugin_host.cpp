@@ -94,10 +94,12 @@ bool PluginHost::load(const fs::path& file) {
   dlerror();
   auto* entry = reinterpret_cast<kestrel_plugin_entry_fn>(dlsym(handle, KESTREL_PLUGIN_ENTRY_SYMBOL));
   if (!entry) {
-    const char* why = dlerror();
+    // Copied before dlclose(), which frees the text dlerror() returned.
+    const char* error_text = dlerror();
+    const std::string why = error_text ? error_text : "symbol not found";
     dlclose(handle);
     return refuse(file, fmt::format("{} is not a kestrel plugin: it has no {} entry point ({})", name,
-                                    KESTREL_PLUGIN_ENTRY_SYMBOL, why ? why : "symbol not found"));
+                                    KESTREL_PLUGIN_ENTRY_SYMBOL, why));
   }
   const kestrel_plugin_descriptor* d = entry();
   if (!d || d->descriptor_size < sizeof(kestrel_plugin_descriptor)) {
