@@ -76,6 +76,20 @@ int run_cli(const std::vector<std::string>& args, std::string* output = nullptr)
   return code;
 }
 
+// Waits until process `pid` catches `signal`, i.e. the CLI has installed its handler and is about
+// to run the graph (how long plugin loading takes depends on the build and the machine's load).
+bool wait_for_handler(pid_t pid, int signal, std::chrono::seconds limit) {
+  const auto deadline = std::chrono::steady_clock::now() + limit;
+  while (std::chrono::steady_clock::now() < deadline) {
+    std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+    std::string line;
+    while (std::getline(status, line))
+      if (line.rfind("SigCgt:", 0) == 0 && (std::stoull(line.substr(7), nullptr, 16) >> (signal - 1)) & 1u) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return false;
+}
+
 const char* kRealtimeForever = R"(executor: realtime
 nodes:
   - {id: src, type: counter_source, params: {rate_hz: 100}}
@@ -94,6 +108,11 @@ TEST_P(CleanShutdown, SignalDrainsFlushesAndExitsZero) {
   const fs::path dir = temp_dir("signal" + std::to_string(GetParam()));
   const fs::path graph = write_graph(dir, kRealtimeForever);
   Process p = start({"run", graph.string(), "--report", (dir / "report").string(), "--stats"}, dir / "output.txt");
+  if (!wait_for_handler(p.pid, GetParam(), std::chrono::seconds(60))) {
+    kill(p.pid, SIGKILL);
+    wait_exit(p);
+    FAIL() << "the CLI never installed its signal handlers:\n" << read(p.output);
+  }
   std::this_thread::sleep_for(std::chrono::milliseconds(1500));
   ASSERT_EQ(kill(p.pid, GetParam()), 0);
   EXPECT_EQ(wait_exit(p), 0) << read(p.output);
