@@ -5,52 +5,20 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "commands.hpp"
 #include "kestrel/algorithms/clear_mot.hpp"
 #include "kestrel/error.hpp"
+#include "mot_files.hpp"
 
 namespace kestrel::cli {
 
 namespace {
 
-// One MOTChallenge row: frame, id, bb_left, bb_top, bb_width, bb_height, conf, x, y, z.
-struct Row {
-  std::uint64_t id = 0;
-  double left = 0, top = 0, width = 0, height = 0, conf = 1;
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();
-};
-
-using Frames = std::map<long, std::vector<Row>>;
-
-Frames read_mot(const std::string& file, bool ground_truth) {
-  std::ifstream in(file);
-  if (!in) throw Error("cannot open " + file);
-  Frames frames;
-  std::string line;
-  int number = 0;
-  while (std::getline(in, line)) {
-    ++number;
-    if (line.empty() || line[0] == '#') continue;
-    std::replace(line.begin(), line.end(), ',', ' ');
-    std::istringstream fields(line);
-    double frame = 0, id = 0;
-    Row r;
-    if (!(fields >> frame >> id >> r.left >> r.top >> r.width >> r.height))
-      throw Error(SourceLocation{file, number, 0}, "expected frame,id,bb_left,bb_top,bb_width,bb_height[,conf,x,y,z]");
-    fields >> r.conf >> r.point.x() >> r.point.y() >> r.point.z();
-    // MOTChallenge ground truth marks entries to ignore with conf (the "considered" flag) = 0.
-    if (ground_truth && r.conf == 0) continue;
-    r.id = static_cast<std::uint64_t>(id);
-    frames[static_cast<long>(frame)].push_back(r);
-  }
-  return frames;
-}
-
-double iou(const Row& a, const Row& b) {
+double iou(const MotRow& a, const MotRow& b) {
   const double x1 = std::max(a.left, b.left), y1 = std::max(a.top, b.top);
   const double x2 = std::min(a.left + a.width, b.left + b.width), y2 = std::min(a.top + a.height, b.top + b.height);
   const double inter = std::max(0.0, x2 - x1) * std::max(0.0, y2 - y1);
@@ -65,14 +33,14 @@ int mot_command(const MotArgs& args) {
     if (args.iou && args.distance) throw Error("give --iou or --dist, not both");
     const bool by_iou = !args.distance;
     const double iou_threshold = args.iou.value_or(0.5);
-    const Frames gt = read_mot(args.ground_truth, true);
-    const Frames test = read_mot(args.test, false);
+    const MotFrames gt = read_mot(args.ground_truth, true);
+    const MotFrames test = read_mot(args.test, false);
     std::map<long, bool> all_frames;
     for (const auto& [f, _] : gt) all_frames[f] = true;
     for (const auto& [f, _] : test) all_frames[f] = true;
 
     algorithms::ClearMotAccumulator acc;
-    const std::vector<Row> none;
+    const std::vector<MotRow> none;
     for (const auto& [f, _] : all_frames) {
       const auto& objects = gt.count(f) ? gt.at(f) : none;
       const auto& hypotheses = test.count(f) ? test.at(f) : none;
