@@ -87,6 +87,14 @@ State RandomManoeuvre::at(double t) const {
 RecordedFlight::RecordedFlight(const std::filesystem::path& csv, bool loop) : loop_(loop) {
   std::ifstream in(csv);
   if (!in) throw Error("cannot open trajectory file " + csv.string());
+  read(in, csv.string());
+}
+
+RecordedFlight::RecordedFlight(std::istream& csv, const std::string& label, bool loop) : loop_(loop) {
+  read(csv, label);
+}
+
+void RecordedFlight::read(std::istream& in, const std::string& label) {
   std::string line;
   int number = 0;
   while (std::getline(in, line)) {
@@ -97,14 +105,13 @@ RecordedFlight::RecordedFlight(const std::filesystem::path& csv, bool loop) : lo
     double t, x, y, z;
     if (!(fields >> t >> x >> y >> z)) {
       if (times_.empty() && number == 1) continue;  // the header
-      throw Error(SourceLocation{csv.string(), number, 0}, "expected four numbers: t,x,y,z");
+      throw Error(SourceLocation{label, number, 0}, "expected four numbers: t,x,y,z");
     }
-    if (!times_.empty() && t <= times_.back())
-      throw Error(SourceLocation{csv.string(), number, 0}, "times must increase");
+    if (!times_.empty() && t <= times_.back()) throw Error(SourceLocation{label, number, 0}, "times must increase");
     times_.push_back(t);
     points_.emplace_back(x, y, z);
   }
-  if (times_.size() < 2) throw Error("trajectory file " + csv.string() + " needs at least two rows of t,x,y,z");
+  if (times_.size() < 2) throw Error("trajectory file " + label + " needs at least two rows of t,x,y,z");
 }
 
 State RecordedFlight::at(double t) const {

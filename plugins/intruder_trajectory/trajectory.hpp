@@ -3,8 +3,10 @@
 // time. Pure functions of time (and of a seed for the random one), so runs reproduce.
 #include <Eigen/Core>
 #include <filesystem>
+#include <istream>
 #include <memory>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "kestrel/geometry/frames.hpp"
@@ -69,10 +71,14 @@ class RecordedFlight final : public Trajectory {
  public:
   /// Throws kestrel::Error naming the file and line of the first problem.
   RecordedFlight(const std::filesystem::path& csv, bool loop);
+  /// The same from a stream; `label` names it in error messages.
+  RecordedFlight(std::istream& csv, const std::string& label, bool loop);
   State at(double t) const override;
   double duration() const { return times_.back() - times_.front(); }
 
  private:
+  void read(std::istream& csv, const std::string& label);
+
   std::vector<double> times_;
   std::vector<Eigen::Vector3d> points_;
   bool loop_;
