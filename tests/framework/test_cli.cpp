@@ -219,3 +219,19 @@ TEST(Cli, MotComputesClearMotOnMotChallengeFiles) {
   EXPECT_EQ(run_cli({"mot", (dir / "missing.txt").string(), (dir / "test.txt").string()}, &out), 2);
   EXPECT_THAT(out, HasSubstr("cannot open"));
 }
+
+TEST(Cli, MotRefusesRowsItCannotScore) {
+  const fs::path dir = temp_dir("mot-bad");
+  std::ofstream(dir / "good.txt") << "1,1,0,0,10,10\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"1,-1,0,0,10,10,2.3,-1,-1,-1\n", "bad.txt:1: the id must be a whole number >= 0, not -1"},
+      {"1,1,0,0,10,10\n2.5,1,0,0,10,10\n", "bad.txt:2: the frame must be a whole number, not 2.5"},
+      {"1e300,1,0,0,10,10\n", "bad.txt:1: the frame must be a whole number"},
+  };
+  for (const auto& [text, message] : cases) {
+    std::ofstream(dir / "bad.txt") << text;
+    std::string out;
+    EXPECT_EQ(run_cli({"mot", (dir / "bad.txt").string(), (dir / "good.txt").string()}, &out), 2) << text;
+    EXPECT_THAT(out, HasSubstr(message));
+  }
+}
