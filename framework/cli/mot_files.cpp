@@ -19,6 +19,13 @@ constexpr double kLargestWhole = 9007199254740992.0;
 
 bool whole(double v, double lo) { return v >= lo && v <= kLargestWhole && v == std::floor(v); }
 
+// One optional field: absent is fine, present must be a number and nothing else.
+bool optional_number(std::istream& fields, double& value, std::string& token) {
+  if (!(fields >> token)) return true;
+  std::istringstream in(token);
+  return static_cast<bool>(in >> value) && (in >> std::ws).eof();
+}
+
 }  // namespace
 
 MotFrames read_mot(std::istream& in, const std::string& label, bool ground_truth) {
@@ -34,7 +41,10 @@ MotFrames read_mot(std::istream& in, const std::string& label, bool ground_truth
     MotRow r;
     if (!(fields >> frame >> id >> r.left >> r.top >> r.width >> r.height))
       throw Error(SourceLocation{label, number, 0}, "expected frame,id,bb_left,bb_top,bb_width,bb_height[,conf,x,y,z]");
-    fields >> r.conf >> r.point.x() >> r.point.y() >> r.point.z();
+    std::string token;
+    for (double* field : {&r.conf, &r.point.x(), &r.point.y(), &r.point.z()})
+      if (!optional_number(fields, *field, token))
+        throw Error(SourceLocation{label, number, 0}, "conf, x, y and z must be numbers, not '" + token + "'");
     if (!whole(frame, -kLargestWhole))
       throw Error(SourceLocation{label, number, 0}, fmt::format("the frame must be a whole number, not {}", frame));
     if (!whole(id, 0))

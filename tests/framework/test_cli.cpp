@@ -227,6 +227,9 @@ TEST(Cli, MotRefusesRowsItCannotScore) {
       {"1,-1,0,0,10,10,2.3,-1,-1,-1\n", "bad.txt:1: the id must be a whole number >= 0, not -1"},
       {"1,1,0,0,10,10\n2.5,1,0,0,10,10\n", "bad.txt:2: the frame must be a whole number, not 2.5"},
       {"1e300,1,0,0,10,10\n", "bad.txt:1: the frame must be a whole number"},
+      // Read as conf 0, this ground-truth row used to be dropped without a word.
+      {"1,1,0,0,10,10,yes\n", "bad.txt:1: conf, x, y and z must be numbers, not 'yes'"},
+      {"1,1,0,0,10,10,1,0,0,5m\n", "bad.txt:1: conf, x, y and z must be numbers, not '5m'"},
   };
   for (const auto& [text, message] : cases) {
     std::ofstream(dir / "bad.txt") << text;
