@@ -4,7 +4,7 @@ JOBS      ?= $(shell nproc)
 DEMO_OUT  ?= out/demo
 GENERATOR := $(shell command -v ninja >/dev/null 2>&1 && echo "-G Ninja")
 
-.PHONY: all deps configure build test demo bench soak format test-asan test-tsan clean
+.PHONY: all deps configure build test demo bench soak format test-asan test-tsan fuzz fuzz-smoke clean
 
 all: build
 
@@ -40,7 +40,7 @@ soak: build
 format:
 	git ls-files '*.cpp' '*.hpp' '*.h' | xargs clang-format -i
 
-# The sanitizer builds, each in its own folder: -O1 with line tables builds and runs
+# The sanitizer and fuzz builds, each in its own folder: -O1 with line tables builds and runs
 # fast and still gives readable stacks; no benchmarks (docs/testing.md).
 SAN_CMAKE := $(GENERATOR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DKESTREL_BUILD_BENCH=OFF \
   -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG"
@@ -49,6 +49,8 @@ ASAN_ENV := ASAN_OPTIONS=detect_leaks=1:check_initialization_order=1:strict_init
   LSAN_OPTIONS=suppressions=$(SAN_DIR)/lsan.supp:print_suppressions=0 \
   UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 TSAN_ENV := TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:suppressions=$(SAN_DIR)/tsan.supp
+FUZZ_BUILD   ?= build-fuzz
+FUZZ_SECONDS ?= 60
 
 # The whole test suite under AddressSanitizer (with LeakSanitizer) and UndefinedBehaviorSanitizer.
 # out_of_tree_plugin is left out: it installs the build and compiles a separate CMake project
@@ -66,5 +68,15 @@ test-tsan: deps
 	cmake --build build-tsan -j $(JOBS) --target kestrel_framework_tests
 	$(TSAN_ENV) ctest --test-dir build-tsan --output-on-failure -j $(JOBS) -L threads
 
+# libFuzzer targets (tests/fuzz), built with clang-14 under ASan and UBSan.
+fuzz: deps
+	cmake -S . -B $(FUZZ_BUILD) $(SAN_CMAKE) -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 \
+	  -DKESTREL_BUILD_FUZZ=ON
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target kestrel_fuzz
+
+# Each fuzz target for FUZZ_SECONDS on a scratch copy of its committed corpus; fails on a crash.
+fuzz-smoke: fuzz
+	scripts/fuzz-smoke $(FUZZ_BUILD) $(FUZZ_SECONDS)
+
 clean:
-	rm -rf $(BUILD) build-asan build-tsan out
+	rm -rf $(BUILD) build-asan build-tsan $(FUZZ_BUILD) out
