@@ -108,6 +108,13 @@ void RecordedFlight::read(std::istream& in, const std::string& label) {
       throw Error(SourceLocation{label, number, 0}, "expected four numbers: t,x,y,z");
     }
     if (!times_.empty() && t <= times_.back()) throw Error(SourceLocation{label, number, 0}, "times must increase");
+    // Numbers a double holds can still overflow once subtracted: the flight's duration and each
+    // segment's speed must stay finite, or at() would return infinities and NaNs.
+    if (!times_.empty() && !std::isfinite(t - times_.front()))
+      throw Error(SourceLocation{label, number, 0}, "the time is too far from the first row's: the duration overflows");
+    if (!times_.empty() && !((Eigen::Vector3d(x, y, z) - points_.back()) / (t - times_.back())).allFinite())
+      throw Error(SourceLocation{label, number, 0},
+                  "the step from the previous row is too large for its time: the speed is not finite");
     times_.push_back(t);
     points_.emplace_back(x, y, z);
   }
@@ -118,7 +125,7 @@ State RecordedFlight::at(double t) const {
   const double t0 = times_.front();
   double local = t + t0;  // the file's clock starts at its first row
   if (loop_) local = t0 + std::fmod(std::max(t, 0.0), duration());
-  if (local <= times_.front()) return State{points_.front(), Eigen::Vector3d::Zero()};
+  if (!(local > times_.front())) return State{points_.front(), Eigen::Vector3d::Zero()};  // NaN too
   if (local >= times_.back()) return State{points_.back(), Eigen::Vector3d::Zero()};
   const auto hi = static_cast<std::size_t>(std::upper_bound(times_.begin(), times_.end(), local) - times_.begin());
   const std::size_t lo = hi - 1;

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "kestrel/runtime/graph.hpp"
 #include "kestrel/runtime/plugin_host.hpp"
@@ -99,6 +100,13 @@ TEST(RecordedFlight, BadFilesNameTheFileAndLine) {
   const auto backwards = write_csv("kestrel-backwards.csv", "0,0,0,0\n2,1,1,1\n1,1,1,1\n");
   EXPECT_THAT([&] { RecordedFlight(backwards, false); },
               ::testing::ThrowsMessage<Error>(::testing::HasSubstr(":3: times must increase")));
+  // Finite numbers whose differences overflow: an infinite duration, an infinite speed.
+  std::istringstream huge("-1e308,-1e308,0,0\n1e308,1e308,0,0\n");
+  EXPECT_THAT([&] { RecordedFlight(huge, "huge.csv", true); },
+              ::testing::ThrowsMessage<Error>(::testing::HasSubstr("huge.csv:2: the time is too far")));
+  std::istringstream tiny("0,0,0,0\n1e-320,1,0,0\n");
+  EXPECT_THAT([&] { RecordedFlight(tiny, "tiny.csv", false); },
+              ::testing::ThrowsMessage<Error>(::testing::HasSubstr("tiny.csv:2: the step from the previous row")));
 }
 
 TEST(IntruderNode, PublishesTruthAtItsRateAndThePlotIsWritten) {
