@@ -94,6 +94,11 @@ void read_includes(GraphSource::Impl& impl, std::vector<std::filesystem::path>& 
       impl.read_errors.error(impl.at(file_node), "included graph file '" + path.string() + "' does not exist");
       continue;
     }
+    // A device, a pipe or a folder is no graph, and reading /dev/zero or a FIFO would never end.
+    if (!std::filesystem::is_regular_file(path)) {
+      impl.read_errors.error(impl.at(file_node), "included graph file '" + path.string() + "' is not a regular file");
+      continue;
+    }
     auto child = read_file(path, path.string());
     chain.push_back(canonical);
     read_includes(*child, chain);

@@ -144,6 +144,18 @@ TEST(GraphInclude, MissingFilesCyclesAndBadEntriesAreReported) {
   EXPECT_THAT(all, HasSubstr(files.path("g.yaml") + ":4:5: error: an include is a graph file name"));
 }
 
+// Only regular files are read: including a device, a pipe or a folder is an error, not a hang.
+TEST(GraphInclude, AnIncludeMustBeARegularFile) {
+  GraphFiles files("not-regular");
+  files.write("g.yaml", "include: [/dev/zero, chains]\nnodes:\n  - {id: a, type: collector}\n");
+  const auto r = files.build("g.yaml");
+  EXPECT_FALSE(r.graph);
+  const std::string all = r.diagnostics.str();
+  EXPECT_THAT(all,
+              HasSubstr(files.path("g.yaml") + ":1:11: error: included graph file '/dev/zero' is not a regular file"));
+  EXPECT_THAT(all, HasSubstr(files.path("chains") + "' is not a regular file"));
+}
+
 TEST(GraphInclude, AnInputConnectedInTwoFilesIsRefused) {
   GraphFiles files("twice");
   files.write("chain.yaml", kChain);
