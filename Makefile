@@ -75,6 +75,7 @@ fuzz: deps
 	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target kestrel_fuzz
 
 # Each fuzz target for FUZZ_SECONDS on a scratch copy of its committed corpus; fails on a crash.
+# FUZZ_TARGETS="mot_reader ..." limits it to some targets.
 fuzz-smoke: fuzz
 	scripts/fuzz-smoke $(FUZZ_BUILD) $(FUZZ_SECONDS)
 
