@@ -40,8 +40,12 @@ std::unique_ptr<GraphSource::Impl> read_file(const std::filesystem::path& file, 
     auto impl = std::make_unique<GraphSource::Impl>();
     impl->label = label;
     impl->file = file;
-    impl->read_errors.error(SourceLocation{label, 0, 0},
-                            std::filesystem::exists(file) ? "cannot read the graph file" : "no such graph file");
+    // The error_code forms: a name the file system refuses (too long, say) is a diagnostic too.
+    std::error_code ec;
+    const bool exists = std::filesystem::exists(file, ec);
+    impl->read_errors.error(SourceLocation{label, 0, 0}, ec       ? "cannot read the graph file: " + ec.message()
+                                                         : exists ? "cannot read the graph file"
+                                                                  : "no such graph file");
     return impl;
   }
   std::stringstream text;
@@ -84,18 +88,30 @@ void read_includes(GraphSource::Impl& impl, std::vector<std::filesystem::path>& 
     }
     std::filesystem::path path = file_node.Scalar();
     if (path.is_relative()) path = (impl.folder() / path).lexically_normal();
-    const auto canonical = std::filesystem::weakly_canonical(path);
+    std::error_code ec;
+    const auto canonical = std::filesystem::weakly_canonical(path, ec);
+    if (ec) {
+      impl.read_errors.error(impl.at(file_node),
+                             "cannot read included graph file '" + path.string() + "': " + ec.message());
+      continue;
+    }
     if (std::find(chain.begin(), chain.end(), canonical) != chain.end() || chain.size() >= kMaxIncludeDepth) {
       impl.read_errors.error(impl.at(file_node),
                              "'" + file_node.Scalar() + "' is already being included: an include cycle");
       continue;
     }
-    if (!std::filesystem::exists(path)) {
+    const auto status = std::filesystem::status(path, ec);
+    if (status.type() == std::filesystem::file_type::not_found) {
       impl.read_errors.error(impl.at(file_node), "included graph file '" + path.string() + "' does not exist");
       continue;
     }
+    if (ec) {
+      impl.read_errors.error(impl.at(file_node),
+                             "cannot read included graph file '" + path.string() + "': " + ec.message());
+      continue;
+    }
     // A device, a pipe or a folder is no graph, and reading /dev/zero or a FIFO would never end.
-    if (!std::filesystem::is_regular_file(path)) {
+    if (!std::filesystem::is_regular_file(status)) {
       impl.read_errors.error(impl.at(file_node), "included graph file '" + path.string() + "' is not a regular file");
       continue;
     }
@@ -110,7 +126,8 @@ void read_includes(GraphSource::Impl& impl, std::vector<std::filesystem::path>& 
 
 void read_includes(GraphSource::Impl& impl) {
   std::vector<std::filesystem::path> chain;
-  if (!impl.file.empty()) chain.push_back(std::filesystem::weakly_canonical(impl.file));
+  std::error_code ec;  // a file that cannot be resolved has already been reported by read_file()
+  if (!impl.file.empty()) chain.push_back(std::filesystem::weakly_canonical(impl.file, ec));
   read_includes(impl, chain);
 }
 

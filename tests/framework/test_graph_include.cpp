@@ -156,6 +156,18 @@ TEST(GraphInclude, AnIncludeMustBeARegularFile) {
   EXPECT_THAT(all, HasSubstr(files.path("chains") + "' is not a regular file"));
 }
 
+// A name the file system refuses (longer than NAME_MAX here) is a diagnostic, not an exception.
+TEST(GraphInclude, NamesTheFileSystemRefusesAreErrors) {
+  GraphFiles files("long-names");
+  const std::string long_name(300, 'a');
+  const auto missing = GraphSource::from_file(files.path(long_name + ".yaml"));
+  EXPECT_THAT(missing.read_errors().str(), HasSubstr("error: cannot read the graph file: File name too long"));
+  files.write("g.yaml", "include: [" + long_name + ".yaml]\nnodes:\n  - {id: a, type: collector}\n");
+  const auto r = files.build("g.yaml");
+  EXPECT_FALSE(r.graph);
+  EXPECT_THAT(r.diagnostics.str(), HasSubstr(files.path("g.yaml") + ":1:11: error: cannot read included graph file"));
+}
+
 TEST(GraphInclude, AnInputConnectedInTwoFilesIsRefused) {
   GraphFiles files("twice");
   files.write("chain.yaml", kChain);
