@@ -3,11 +3,11 @@
 # builds a plugin outside this tree.
 include(CMakePackageConfigHelpers)
 
-install(TARGETS kestrel kestrel_plot kestrel_algorithms kestrel_tracking EXPORT kestrelTargets
+install(TARGETS kestrel kestrel_messages kestrel_plot kestrel_algorithms kestrel_tracking EXPORT kestrelTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS kestrel_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(DIRECTORY framework/include/kestrel DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+install(DIRECTORY framework/include/kestrel framework/messages/include/kestrel DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
         FILES_MATCHING PATTERN "*.hpp" PATTERN "*.h")
 install(FILES "${CMAKE_BINARY_DIR}/include/kestrel/version.hpp" DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/kestrel)
 

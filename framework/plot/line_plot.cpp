@@ -187,12 +187,25 @@ std::vector<double> nice_ticks(double lo, double hi, int target_count) {
   return ticks;
 }
 
-void save_png(const std::filesystem::path& file, const std::vector<Panel>& panels, int width, int panel_height) {
+namespace {
+cv::Mat render(const std::vector<Panel>& panels, int width, int panel_height) {
   const int count = std::max<int>(1, static_cast<int>(panels.size()));
   cv::Mat img(panel_height * count, width, CV_8UC3, cv::Scalar(255, 255, 255));
   for (int i = 0; i < static_cast<int>(panels.size()); ++i)
     draw_panel(img, panels[static_cast<std::size_t>(i)], cv::Rect(0, i * panel_height, width, panel_height));
-  if (!cv::imwrite(file.string(), img)) throw Error("cannot write plot " + file.string());
+  return img;
+}
+}  // namespace
+
+std::string render_png(const std::vector<Panel>& panels, int width, int panel_height) {
+  std::vector<unsigned char> bytes;
+  if (!cv::imencode(".png", render(panels, width, panel_height), bytes)) throw Error("cannot encode a plot as PNG");
+  return {bytes.begin(), bytes.end()};
+}
+
+void save_png(const std::filesystem::path& file, const std::vector<Panel>& panels, int width, int panel_height) {
+  if (!cv::imwrite(file.string(), render(panels, width, panel_height)))
+    throw Error("cannot write plot " + file.string());
 }
 
 }  // namespace kestrel::plot

@@ -19,19 +19,37 @@ void NodeInit::set_period(Duration period) {
   tick_interval_ns_ = static_cast<double>(period.count());
 }
 
-std::shared_ptr<void> NodeInit::make_component_erased(const std::string& param_name, std::string_view kind) const {
-  const ParamSpec* spec = spec_.find_param(param_name);
-  if (!spec || spec->type != ParamType::component)
-    throw Error("node '" + id_ + "': '" + param_name + "' is not a component parameter in spec()");
-  if (spec->component_kind != kind)
-    throw Error("node '" + id_ + "': parameter '" + param_name + "' holds a " + spec->component_kind + ", not a " +
-                std::string(kind));
-  const auto config = params_.get<ComponentConfig>(param_name);
-  const ComponentType* type = registry_.find_component(kind, config.type);
-  if (!type) throw Error("node '" + id_ + "': no " + std::string(kind) + " named '" + config.type + "'");
-  static const Params kNoParams;
-  return type->factory(config.params ? *config.params : kNoParams);
+namespace detail {
+
+std::uint64_t derive_seed(std::uint64_t seed, std::string_view name) {
+  // FNV-1a of the name, mixed into the seed with splitmix64's finaliser.
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  for (unsigned char c : name) h = (h ^ c) * 0x100000001b3ull;
+  std::uint64_t z = seed + 0x9e3779b97f4a7c15ull * (h | 1u);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return z ^ (z >> 31);
 }
+
+std::shared_ptr<void> make_component(const Registry& registry, const std::string& owner, const ParamSet& owner_spec,
+                                     const Params& owner_params, const std::string& param_name, std::string_view kind,
+                                     std::uint64_t owner_seed, Logger& log) {
+  const ParamSpec* spec = owner_spec.find(param_name);
+  if (!spec || spec->type != ParamType::component)
+    throw Error("'" + owner + "': '" + param_name + "' is not a component parameter in spec()");
+  if (spec->component_kind != kind)
+    throw Error("'" + owner + "': parameter '" + param_name + "' holds a " + spec->component_kind + ", not a " +
+                std::string(kind));
+  const auto config = owner_params.get<ComponentConfig>(param_name);
+  const ComponentType* type = registry.find_component(kind, config.type);
+  if (!type) throw Error("'" + owner + "': no " + std::string(kind) + " named '" + config.type + "'");
+  static const Params kNoParams;
+  const ComponentInit init(owner + "." + param_name, type->spec.param_set(), config.params ? *config.params : kNoParams,
+                           registry, derive_seed(owner_seed, param_name), log);
+  return type->factory(init);
+}
+
+}  // namespace detail
 
 const Envelope& Context::envelope(std::string_view input) const {
   for (auto& slot : rt_.inputs)
@@ -55,7 +73,13 @@ std::mt19937_64& Context::rng() { return rt_.rng; }
 void Context::set_report_section(const std::string& key, nlohmann::json value, std::string markdown) {
   rt_.run->report.set_section(rt_.id(), key, std::move(value), std::move(markdown));
 }
-const std::filesystem::path& Context::artifact_dir() const { return rt_.run->report.artifact_dir(); }
+void Context::describe_metric(const std::string& path, std::string unit, bool higher_is_better, bool by_magnitude) {
+  rt_.run->report.describe_metric(rt_.id(), path, MetricMeta{std::move(unit), higher_is_better, by_magnitude});
+}
+bool Context::keeps_artifacts() const { return rt_.run->report.keeps_artifacts(); }
+void Context::add_artifact(const std::string& file_name, std::string_view bytes, std::string caption) {
+  rt_.run->report.add_artifact(rt_.id(), file_name, bytes, std::move(caption));
+}
 void Context::end_of_stream() { rt_.source_ended = true; }
 void Context::request_stop() { rt_.run->stop_requested = true; }
 
@@ -102,8 +126,8 @@ void NodeRuntime::publish(std::string_view output, std::shared_ptr<const void> p
   const int index = config->type->spec.output_index(output);
   if (index < 0) throw Error("published on '" + std::string(output) + "', which is not an output of " + this->type());
   const PortSpec& port = config->type->spec.outputs()[static_cast<std::size_t>(index)];
-  if (port.type != type)
-    throw Error("published a " + std::string(type) + " on output '" + port.name + "', declared as " + port.type);
+  if (port.type() != type)
+    throw Error("published a " + std::string(type) + " on output '" + port.name + "', declared as " + port.type());
   if (!payload) throw Error("published a null message on output '" + port.name + "'");
   const Envelope envelope{std::move(payload), type, run->executor->now(),
                           run->next_sequence.fetch_add(1, std::memory_order_relaxed)};

@@ -59,6 +59,16 @@ void write_report(const std::filesystem::path& dir, const RunResult& result,
     md += section.markdown.empty() ? json_to_markdown_table(section.value) : section.markdown;
     if (!md.empty() && md.back() != '\n') md += '\n';
   }
+  if (!result.report["artifacts"].empty()) {
+    md += "\n## Files\n\n";
+    for (const auto& a : result.report["artifacts"]) {
+      const std::string file = a["file"].get<std::string>();
+      const std::string caption = a["caption"].get<std::string>().empty() ? file : a["caption"].get<std::string>();
+      const bool image = file.size() > 4 && file.substr(file.size() - 4) == ".png";
+      md += image ? fmt::format("![{}]({})\n\n*{}* ({})\n\n", caption, file, caption, a["node"].get<std::string>())
+                  : fmt::format("- [{}]({}): {} ({})\n", file, file, caption, a["node"].get<std::string>());
+    }
+  }
   md +=
       "\n## Nodes\n\n| node | type | in | out | drops | errors | p50 µs | p99 µs | max µs |\n"
       "|---|---|---:|---:|---:|---:|---:|---:|---:|\n";

@@ -80,7 +80,10 @@ class DetectionEvaluator final : public Node {
         s.frames, s.precision, s.recall, s.tp, s.fp, s.fn, s.rmse.x(), s.rmse.y(), s.rmse.z(), lag, s.mean_error.x(),
         s.mean_error.y(), s.mean_error.z());
     ctx.set_report_section(section_, json, md);
-    if (!ctx.artifact_dir().empty()) write_csv(ctx.artifact_dir() / (section_ + ".csv"));
+    if (ctx.keeps_artifacts()) {
+      ctx.add_artifact(section_ + ".csv", matches_csv(), "matched detections with their errors");
+      ctx.add_artifact(section_ + "_per_frame.csv", counts_csv(), "TP, FP and FN per frame");
+    }
   }
 
  private:
@@ -99,13 +102,15 @@ class DetectionEvaluator final : public Node {
     frames_.push_back(fmt::format("{:.4f},{},{},{}", frame.capture_s, frame.tp, frame.fp, frame.fn));
   }
 
-  void write_csv(const std::filesystem::path& file) const {
-    std::ofstream out(file);
-    out << "capture_s,arrival_s,truth_id,x,y,z,error_x,error_y,error_z\n";
-    for (const auto& r : rows_) out << r << '\n';
-    std::ofstream counts(file.parent_path() / (file.stem().string() + "_per_frame.csv"));
-    counts << "capture_s,tp,fp,fn\n";
-    for (const auto& r : frames_) counts << r << '\n';
+  std::string matches_csv() const {
+    std::string csv = "capture_s,arrival_s,truth_id,x,y,z,error_x,error_y,error_z\n";
+    for (const auto& r : rows_) csv += r + '\n';
+    return csv;
+  }
+  std::string counts_csv() const {
+    std::string csv = "capture_s,tp,fp,fn\n";
+    for (const auto& r : frames_) csv += r + '\n';
+    return csv;
   }
 
   DetectionScorer scorer_;

@@ -41,8 +41,8 @@ class EuclideanClusterer final : public Node {
     const auto in = ctx.get(kCloud);
     if (!in->points) throw Error("point cloud message without points");
     const Clusters clusters = find_clusters(in->points, options_);
-    if (clouds_++ == snapshot_ && !ctx.artifact_dir().empty())
-      draw(ctx.artifact_dir() / "clusters.png", *in->points, clusters);
+    if (clouds_++ == snapshot_ && ctx.keeps_artifacts())
+      ctx.add_artifact("clusters.png", draw(*in->points, clusters), "filtered cloud and its clusters");
     msg::Detections out;
     out.stamp = in->stamp;
     out.frame = in->frame;
@@ -52,7 +52,7 @@ class EuclideanClusterer final : public Node {
 
  private:
   // Front (x, y) and top (x, z) views: all points grey, kept clusters in colour, centroids ringed.
-  static void draw(const std::filesystem::path& file, const pcl::PointCloud<pcl::PointXYZ>& cloud, const Clusters& c) {
+  static std::string draw(const pcl::PointCloud<pcl::PointXYZ>& cloud, const Clusters& c) {
     plot::Panel front{"filtered cloud, front view (camera frame)", "x [m]", "-y [m] (up)", {}};
     plot::Panel top{"filtered cloud, top view", "x [m]", "z [m] (depth)", {}};
     plot::Series all_front{"all points", {}, {}, plot::Series::Style::points, {170, 170, 170}, 1};
@@ -83,7 +83,7 @@ class EuclideanClusterer final : public Node {
       front.series.push_back(f);
       top.series.push_back(t);
     }
-    plot::save_png(file, {front, top}, 1000, 420);
+    return plot::render_png({front, top}, 1000, 420);
   }
 
   ClusterOptions options_;

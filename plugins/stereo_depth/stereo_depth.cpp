@@ -10,6 +10,14 @@
 
 namespace kestrel::stereo {
 
+namespace {
+std::string encode_png(const cv::Mat& image) {
+  std::vector<unsigned char> bytes;
+  if (!cv::imencode(".png", image, bytes)) throw Error("cannot encode a snapshot as PNG");
+  return {bytes.begin(), bytes.end()};
+}
+}  // namespace
+
 class StereoDepth final : public Node {
  public:
   static constexpr Input<msg::StereoFrame> kFrame{"frame"};
@@ -96,11 +104,11 @@ class StereoDepth final : public Node {
     cloud.stamp = frame->stamp;
     cloud.frame = "camera";
     cloud.points = reproject(disparity, pair.calibration, min_depth_, max_depth_, step_);
-    if (static_cast<std::int64_t>(frame->frame_index) == snapshot_ && !ctx.artifact_dir().empty()) {
-      cv::imwrite((ctx.artifact_dir() / "left.png").string(), frame->left);
-      cv::imwrite((ctx.artifact_dir() / "right.png").string(), frame->right);
-      cv::imwrite((ctx.artifact_dir() / "disparity.png").string(),
-                  colourise_disparity(disparity, options_.num_disparities));
+    if (static_cast<std::int64_t>(frame->frame_index) == snapshot_ && ctx.keeps_artifacts()) {
+      ctx.add_artifact("left.png", encode_png(frame->left), "left image");
+      ctx.add_artifact("right.png", encode_png(frame->right), "right image");
+      ctx.add_artifact("disparity.png", encode_png(colourise_disparity(disparity, options_.num_disparities)),
+                       "disparity (near is warm)");
     }
     ctx.publish(kCloud, std::move(cloud));
   }

@@ -8,6 +8,7 @@
 #include <kestrel/plot/line_plot.hpp>
 #include <kestrel/plugin.hpp>
 #include <map>
+#include <sstream>
 
 namespace kestrel::trajectory_plot {
 
@@ -53,13 +54,10 @@ class TrajectoryPlot final : public Node {
   }
 
   void finish(Context& ctx) override {
-    const std::filesystem::path dir = output_dir_.empty() ? ctx.artifact_dir() : std::filesystem::path(output_dir_);
-    if (dir.empty()) {
+    if (output_dir_.empty() && !ctx.keeps_artifacts()) {
       ctx.log().info("no output folder: run with --report DIR (or set output_dir) to get {}.png", name_);
       return;
     }
-    std::filesystem::create_directories(dir);
-    write_csv(dir / (name_ + ".csv"));
     std::vector<plot::Panel> panels(3);
     const char* axes[] = {"x", "y", "z"};
     for (int a = 0; a < 3; ++a) {
@@ -81,7 +79,16 @@ class TrajectoryPlot final : public Node {
         panels[static_cast<std::size_t>(a)].series.push_back(std::move(line));
       }
     }
-    plot::save_png(dir / (name_ + ".png"), panels);
+    const std::string png = plot::render_png(panels);
+    if (output_dir_.empty()) {
+      ctx.add_artifact(name_ + ".csv", csv(), "truth, detections and selected track against time");
+      ctx.add_artifact(name_ + ".png", png, "truth, detections and selected track against time (camera frame)");
+      return;
+    }
+    const std::filesystem::path dir(output_dir_);
+    std::filesystem::create_directories(dir);
+    write_file(dir / (name_ + ".csv"), csv());
+    write_file(dir / (name_ + ".png"), png);
     ctx.log().info("wrote {}", (dir / (name_ + ".png")).string());
   }
 
@@ -98,12 +105,19 @@ class TrajectoryPlot final : public Node {
     s.p.push_back(p);
   }
 
-  void write_csv(const std::filesystem::path& file) const {
-    std::ofstream out(file);
+  std::string csv() const {
+    std::ostringstream out;
     out << "series,t,x,y,z\n";
     for (const auto& [label, s] : series_)
       for (std::size_t i = 0; i < s.t.size(); ++i)
         out << label << ',' << s.t[i] << ',' << s.p[i].x() << ',' << s.p[i].y() << ',' << s.p[i].z() << '\n';
+    return out.str();
+  }
+
+  static void write_file(const std::filesystem::path& file, const std::string& bytes) {
+    std::ofstream out(file, std::ios::binary);
+    out << bytes;
+    out.close();
     if (!out) throw Error("cannot write " + file.string());
   }
 

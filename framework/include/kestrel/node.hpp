@@ -1,21 +1,27 @@
 #pragma once
 // What a plugin author implements: a Node, built from a NodeInit, called with a Context.
 //
+//   struct DoublerConfig {
+//     double factor = 2.0;
+//   };
 //   class Doubler final : public kestrel::Node {
 //    public:
 //     static constexpr kestrel::Input<Number> kIn{"in"};
 //     static constexpr kestrel::Output<Number> kOut{"out"};
 //     static kestrel::NodeSpec spec() {
+//       kestrel::ConfigSpec<DoublerConfig> c;
+//       c.param("factor", &DoublerConfig::factor).range(-10.0, 10.0).describe("multiplier");
 //       return kestrel::NodeSpec("doubler", "Multiplies each number by a factor")
 //           .input(kIn, "numbers").output(kOut, "scaled numbers")
-//           .param(kestrel::param("factor", 2.0).describe("multiplier"));
+//           .config(std::move(c));
 //     }
-//     explicit Doubler(kestrel::NodeInit& init) : factor_(init.param<double>("factor")) {}
+//     explicit Doubler(kestrel::NodeInit& init) : cfg_(init.config<DoublerConfig>()) {}
 //     void process(kestrel::Context& ctx) override {
-//       ctx.publish(kOut, Number{ctx.get(kIn)->value * factor_});
+//       auto in = ctx.get(kIn);
+//       ctx.publish(kOut, Number{in->stamp, in->value * cfg_.factor});
 //     }
 //    private:
-//     double factor_;
+//     DoublerConfig cfg_;
 //   };
 //   KESTREL_REGISTER_NODE(Doubler)
 #include <cstdint>
@@ -25,6 +31,7 @@
 #include <string>
 #include <string_view>
 
+#include "kestrel/component.hpp"
 #include "kestrel/error.hpp"
 #include "kestrel/logger.hpp"
 #include "kestrel/message.hpp"
@@ -67,6 +74,12 @@ class NodeInit {
   const std::string& id() const { return id_; }
   const NodeSpec& spec() const { return spec_; }
   const Params& params() const { return params_; }
+  /// The parameters as the config struct that spec() binds them to (see ConfigSpec).
+  template <class Config>
+  Config config() const {
+    return detail::config_from<Config>(spec_.param_set(), params_, "node '" + id_ + "'");
+  }
+  /// One parameter that is not bound to a config struct (declared with NodeSpec::param).
   template <class T>
   T param(const std::string& name) const {
     return params_.get<T>(name);
@@ -76,7 +89,8 @@ class NodeInit {
   /// `static constexpr std::string_view kKind` matching the parameter's kind.
   template <class Interface>
   std::shared_ptr<Interface> make_component(const std::string& param_name) const {
-    return std::static_pointer_cast<Interface>(make_component_erased(param_name, Interface::kKind));
+    return std::static_pointer_cast<Interface>(
+        detail::make_component(registry_, id_, spec_.param_set(), params_, param_name, Interface::kKind, seed_, log_));
   }
 
   /// Asks for tick() `hz` times a second, from time zero. Sources use this. Tick k falls at
@@ -93,8 +107,6 @@ class NodeInit {
   Logger& log() const { return log_; }
 
  private:
-  std::shared_ptr<void> make_component_erased(const std::string& param_name, std::string_view kind) const;
-
   std::string id_;
   const NodeSpec& spec_;
   const Params& params_;
@@ -144,7 +156,14 @@ class Context {
   std::mt19937_64& rng();
   /// The run report. Sections set here are owned by this node.
   void set_report_section(const std::string& key, nlohmann::json value, std::string markdown = {});
-  const std::filesystem::path& artifact_dir() const;
+  /// Says how to read a metric of this node's sections: `path` is its dotted key in report.json
+  /// ("detection.recall"). sweep, ab and plot compare runs with it.
+  void describe_metric(const std::string& path, std::string unit, bool higher_is_better, bool by_magnitude = false);
+  /// True when the run keeps a report folder, so that artifacts are worth preparing.
+  bool keeps_artifacts() const;
+  /// Adds a file to the run report (a PNG is shown in report.md): the runtime writes it, checks
+  /// the write and lists it. Ignored when the run keeps no report folder.
+  void add_artifact(const std::string& file_name, std::string_view bytes, std::string caption = {});
 
   /// A source says it has nothing more to publish; it gets no more ticks. The run ends when every
   /// source has ended (or at its duration).
