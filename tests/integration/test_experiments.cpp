@@ -34,11 +34,11 @@ std::string read(const fs::path& f) {
 TEST(Experiments, SweepRunsTheGridWithEverySeed) {
   const fs::path dir = fs::temp_directory_path() / "kestrel-sweep-test";
   fs::remove_all(dir);
-  ASSERT_EQ(kestrel({"sweep", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--param", "tracker.r=0.5:1.0:0.5",
-                     "--seeds", "2", "--duration", "0.5", "--report", dir.string()}),
+  ASSERT_EQ(kestrel({"sweep", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--param",
+                     "tracker.filter.r=0.5:1.0:0.5", "--seeds", "2", "--duration", "0.5", "--report", dir.string()}),
             0);
   const std::string csv = read(dir / "sweep.csv");
-  EXPECT_THAT(csv, ::testing::StartsWith("tracker.r,seed,exit_code,"));
+  EXPECT_THAT(csv, ::testing::StartsWith("tracker.filter.r,seed,exit_code,"));
   EXPECT_THAT(csv, ::testing::HasSubstr("\n0.5,1,0,"));
   EXPECT_THAT(csv, ::testing::HasSubstr("\n1,2,0,"));
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);  // header + 2 values x 2 seeds
@@ -79,16 +79,16 @@ TEST(Experiments, AbComparesSettingsOfOneGraph) {
   const fs::path dir = fs::temp_directory_path() / "kestrel-ab-settings-test";
   fs::remove_all(dir);
   ASSERT_EQ(kestrel({"ab", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml",
-                     KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--set-a", "tracker.r=0.1", "--set-b",
-                     "tracker.r=5.0", "--seeds", "2", "--duration", "1", "--report", dir.string()}),
+                     KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--set-a", "tracker.filter.r=0.1", "--set-b",
+                     "tracker.filter.r=5.0", "--seeds", "2", "--duration", "1", "--report", dir.string()}),
             0);
   const auto ab = nlohmann::json::parse(read(dir / "ab.json"));
-  EXPECT_EQ(ab.at("set_a"), nlohmann::json::array({"tracker.r=0.1"}));
-  EXPECT_EQ(ab.at("set_b"), nlohmann::json::array({"tracker.r=5.0"}));
+  EXPECT_EQ(ab.at("set_a"), nlohmann::json::array({"tracker.filter.r=0.1"}));
+  EXPECT_EQ(ab.at("set_b"), nlohmann::json::array({"tracker.filter.r=5.0"}));
   EXPECT_EQ(ab.at("metrics").at("detection.recall").at("better"), "equal");
   const auto& rmse = ab.at("metrics").at("tracking.rmse_m");
   EXPECT_NE(rmse.at("mean_a").get<double>(), rmse.at("mean_b").get<double>());
-  EXPECT_THAT(read(dir / "ab.md"), ::testing::HasSubstr("with tracker.r=5.0"));
+  EXPECT_THAT(read(dir / "ab.md"), ::testing::HasSubstr("with tracker.filter.r=5.0"));
   // An override one side's graph does not accept fails before any run.
   EXPECT_EQ(
       kestrel({"ab", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml",

@@ -1,4 +1,5 @@
-// Six seconds of the paper's tracking graph: detection chain, Kalman tracker, both evaluators.
+// Six seconds of the paper's tracking graph: detection chain, tracker (Kalman filter), both
+// evaluators; and the tracking scenarios.
 // Bounds: the paper's MOTA, and its 0.09 m target RMSE with a margin for a short run.
 #include <gmock/gmock.h>
 
@@ -58,10 +59,17 @@ RunResult run_graph_file(const std::string& file, double duration, const std::ve
 TEST(TrackingScenarios, CoastsThroughATemporaryOcclusion) {
   // Ten frames without detections from t = 1 s: the track is predicted through and keeps its id.
   const auto r = run_graph_file(KESTREL_SOURCE_DIR "/graphs/tracking_occlusion.yaml", 3.0, {"occlusion.first_s=1.0"});
+  // The blackout happened: the tracker saw exactly its ten empty frames, and its target coasted
+  // through all ten on its prediction.
+  const auto& seen = r.report.at("tracker");
+  EXPECT_EQ(seen.at("frames"), 90);
+  EXPECT_EQ(seen.at("empty_frames"), 10);
+  EXPECT_EQ(seen.at("target_coasted_frames"), 10);
   const auto& t = r.report.at("tracking");
   EXPECT_EQ(t.at("idsw"), 0);
   EXPECT_EQ(t.at("fragmentations"), 0);
   EXPECT_GE(t.at("mota").get<double>(), 0.99);
+  EXPECT_EQ(t.at("target").at("on_target"), 90);
 }
 
 TEST(TrackingScenarios, TwoCrossingIntrudersAreBothTracked) {
@@ -72,7 +80,23 @@ TEST(TrackingScenarios, TwoCrossingIntrudersAreBothTracked) {
   EXPECT_GE(t.at("mota").get<double>(), 0.9);
 }
 
-// The particle tracker draws from seeded streams only: two lockstep runs give the same tracks,
+// One graph, two filters: the YAML alone (here --set) swaps the Kalman filter for the particle
+// filter, and gives the same tracks, to the last bit, as the particle graph in graphs/.
+TEST(TrackingScenarios, TheYamlAloneSwitchesKalmanAndParticleFilters) {
+  const std::string kalman = KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml";
+  const auto by_kalman = run_graph_file(kalman, 1.0);
+  const auto by_particles = run_graph_file(kalman, 1.0, {"tracker.filter=particle"});
+  const auto particle_graph = run_graph_file(KESTREL_SOURCE_DIR "/graphs/paper_tracking_particle.yaml", 1.0);
+  ASSERT_TRUE(by_particles.report.contains("tracking"));
+  EXPECT_NE(by_kalman.report.at("tracking").at("rmse_m"), by_particles.report.at("tracking").at("rmse_m"));
+  EXPECT_EQ(by_particles.report.at("tracking"), particle_graph.report.at("tracking"));
+  // And back: the particle graph with the Kalman filter is the Kalman graph.
+  const auto back = run_graph_file(KESTREL_SOURCE_DIR "/graphs/paper_tracking_particle.yaml", 1.0,
+                                   {"tracker.filter={type: kalman, r: 1.0}"});
+  EXPECT_EQ(back.report.at("tracking"), by_kalman.report.at("tracking"));
+}
+
+// The particle filter draws from seeded streams only: two lockstep runs give the same tracks,
 // to the last bit, and another seed gives others.
 TEST(TrackingScenarios, ParticleTrackingRunsAreBitIdenticalForASeed) {
   const std::string graph = KESTREL_SOURCE_DIR "/graphs/paper_tracking_particle.yaml";
