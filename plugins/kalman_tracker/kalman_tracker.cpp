@@ -13,31 +13,16 @@
 
 namespace kestrel::tracking {
 
-using KalmanTrackerConfig = DeprecatedTrackerConfig<KalmanConfig>;
-
-class KalmanTracker final : public TrackerNode {
- public:
-  static NodeSpec spec() {
-    ConfigSpec<KalmanTrackerConfig> c;
-    KalmanFilter::declare(c);
-    declare_deprecated_track_management(c);
-    return with_ports(NodeSpec("kalman_tracker", "Deprecated: use type tracker with filter: kalman"))
-        .details(
-            "Kept for one release. The same tracker as `type: tracker` with `filter: {type: kalman, q, r, p}`, "
-            "`initiator: {type: consecutive_hits, confirm_hits}`, `deleter: {type: consecutive_misses, "
-            "max_misses}` and `selector: <selection>`.")
-        .config(std::move(c));
-  }
-
-  explicit KalmanTracker(NodeInit& init) : KalmanTracker(init, init.config<KalmanTrackerConfig>()) {}
-
- private:
-  KalmanTracker(NodeInit& init, const KalmanTrackerConfig& cfg)
-      : TrackerNode(deprecated_tracker_parts(init, cfg,
-                                             std::make_shared<KalmanFilter>(static_cast<const KalmanConfig&>(cfg)))) {
-    warn_deprecated(init.log(), "kalman_tracker", "type: tracker with filter: {type: kalman, ...}");
+struct OldKalmanTracker {
+  static constexpr const char* kType = "kalman_tracker";
+  static constexpr const char* kFilter = "kalman";
+  using FilterComponent = KalmanFilter;
+  using FilterConfig = KalmanConfig;
+  static std::shared_ptr<Filter> make_filter(const NodeInit&, const KalmanConfig& cfg) {
+    return std::make_shared<KalmanFilter>(cfg);
   }
 };
+using KalmanTracker = DeprecatedTracker<OldKalmanTracker>;
 KESTREL_REGISTER_NODE(KalmanTracker)
 
 }  // namespace kestrel::tracking

@@ -8,34 +8,17 @@
 
 namespace kestrel::tracking {
 
-using ParticleTrackerConfig = DeprecatedTrackerConfig<ParticleOptions>;
-
-class ParticleTracker final : public TrackerNode {
- public:
-  static NodeSpec spec() {
-    ConfigSpec<ParticleTrackerConfig> c;
-    ParticleFilter::declare(c);
-    declare_deprecated_track_management(c);
-    return with_ports(NodeSpec("particle_tracker", "Deprecated: use type tracker with filter: particle"))
-        .details(
-            "Kept for one release. The same tracker as `type: tracker` with `filter: {type: particle, ...}` (the "
-            "particle filter's parameters), `initiator: {type: consecutive_hits, confirm_hits}`, `deleter: {type: "
-            "consecutive_misses, max_misses}` and `selector: <selection>`, with the same random streams.")
-        .config(std::move(c));
-  }
-
-  explicit ParticleTracker(NodeInit& init) : ParticleTracker(init, init.config<ParticleTrackerConfig>()) {}
-
- private:
-  ParticleTracker(NodeInit& init, const ParticleTrackerConfig& cfg)
-      : TrackerNode(deprecated_tracker_parts(
-            init, cfg,
-            // The seed `tracker` gives its `filter` component: the same tracks as the new form.
-            std::make_shared<ParticleFilter>(static_cast<const ParticleOptions&>(cfg),
-                                             detail::derive_seed(init.seed(), "filter")))) {
-    warn_deprecated(init.log(), "particle_tracker", "type: tracker with filter: {type: particle, ...}");
+struct OldParticleTracker {
+  static constexpr const char* kType = "particle_tracker";
+  static constexpr const char* kFilter = "particle";
+  using FilterComponent = ParticleFilter;
+  using FilterConfig = ParticleOptions;
+  // The seed `tracker` gives its `filter` component: the same tracks as the new form.
+  static std::shared_ptr<Filter> make_filter(const NodeInit& init, const ParticleOptions& cfg) {
+    return std::make_shared<ParticleFilter>(cfg, detail::derive_seed(init.seed(), "filter"));
   }
 };
+using ParticleTracker = DeprecatedTracker<OldParticleTracker>;
 KESTREL_REGISTER_NODE(ParticleTracker)
 
 }  // namespace kestrel::tracking

@@ -141,6 +141,7 @@ Eigen::Vector3d velocity(const nlohmann::json& track) {
 TEST(TrackerNode, FollowsTwoTargetsWithEitherFilter) {
   const double t = 89 / 30.0;
   const Eigen::Vector3d a(-1 + 0.6 * t, 0, 5), b(1 - 0.3 * t, 2 + 0.1 * t, 7);
+  std::vector<nlohmann::json> states;
   for (const std::string filter : {"{type: kalman, r: 0.05}", "{type: particle, r: 0.05}"}) {
     SCOPED_TRACE(filter);
     const auto r = run(graph("tracker", "{filter: " + filter + "}"));
@@ -160,7 +161,9 @@ TEST(TrackerNode, FollowsTwoTargetsWithEitherFilter) {
     EXPECT_EQ(counts.at("frames"), 90);
     EXPECT_EQ(counts.at("tracks_started"), 2);
     EXPECT_EQ(counts.at("empty_frames"), 0);
+    states.push_back(tracks[0].at("state"));
   }
+  EXPECT_NE(states[0], states[1]);  // two filters, not one filter twice
 }
 
 // The selector named in YAML (and reached by --set) chooses the target. Both tracks are born in
