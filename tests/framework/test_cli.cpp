@@ -153,6 +153,14 @@ TEST(Cli, InspectPluginsAndDotDescribeTheGraph) {
   EXPECT_THAT(out, HasSubstr("factor"));
   EXPECT_THAT(out, HasSubstr("range [-1000000, 1000000]"));
   EXPECT_THAT(out, HasSubstr("one of {multiply, divide}"));
+  EXPECT_EQ(run_cli({"inspect", "window"}, &out), 0);
+  EXPECT_THAT(out, HasSubstr("Rules:\n    low <= high"));
+  EXPECT_THAT(out, HasSubstr("fallback               float list             default [0, 0]  2 values"));
+  // A message type by its full name or by its last part.
+  EXPECT_EQ(run_cli({"inspect", "test.Number"}, &out), 0);
+  EXPECT_THAT(out, HasSubstr("Message type test.Number"));
+  EXPECT_EQ(run_cli({"inspect", "Number"}, &out), 0);
+  EXPECT_THAT(out, HasSubstr("Message type test.Number"));
   EXPECT_EQ(run_cli({"plugins"}, &out), 0);
   EXPECT_THAT(out, HasSubstr("counter_source"));
   EXPECT_THAT(out, HasSubstr("Publishes 0, 1, 2"));
