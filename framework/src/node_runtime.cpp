@@ -10,12 +10,12 @@ void Node::tick(Context&) {}
 void Node::finish(Context&) {}
 
 void NodeInit::set_rate(double hz) {
-  if (!(hz > 0.0) || !std::isfinite(hz)) throw Error("node '" + id_ + "': a timer rate must be positive");
+  if (!(hz > 0.0) || !std::isfinite(hz)) throw Error("node '" + id() + "': a timer rate must be positive");
   tick_interval_ns_ = 1e9 / hz;
 }
 
 void NodeInit::set_period(Duration period) {
-  if (period <= Duration::zero()) throw Error("node '" + id_ + "': a timer period must be positive");
+  if (period <= Duration::zero()) throw Error("node '" + id() + "': a timer period must be positive");
   tick_interval_ns_ = static_cast<double>(period.count());
 }
 
