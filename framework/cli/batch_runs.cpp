@@ -7,10 +7,10 @@
 
 #include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <set>
+#include <map>
 
 #include "kestrel/error.hpp"
+#include "report_metrics.hpp"
 
 extern char** environ;
 
@@ -44,14 +44,6 @@ pid_t spawn(const std::string& exe, const BatchJob& job) {
   return pid;
 }
 
-void flatten(const nlohmann::json& value, const std::string& prefix, std::map<std::string, double>& out) {
-  if (value.is_object()) {
-    for (const auto& [k, v] : value.items()) flatten(v, prefix + "." + k, out);
-  } else if (value.is_number()) {
-    out[prefix] = value.get<double>();
-  }
-}
-
 }  // namespace
 
 std::vector<BatchResult> run_batch(const std::vector<BatchJob>& jobs, int parallel) {
@@ -74,34 +66,11 @@ std::vector<BatchResult> run_batch(const std::vector<BatchJob>& jobs, int parall
     ++done;
     BatchResult& r = results[index];
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    std::ifstream in(jobs[index].report_dir / "report.json");
-    if (in) r.report = nlohmann::json::parse(in, nullptr, false);
+    r.report = read_report(jobs[index].report_dir);
     std::fprintf(stderr, "\r[kestrel] %zu/%zu runs done", done, jobs.size());
   }
   std::fprintf(stderr, "\n");
   return results;
-}
-
-std::map<std::string, double> report_metrics(const nlohmann::json& report) {
-  static const std::set<std::string> runtime_keys = {"kestrel_version", "graph",       "outcome", "errors",
-                                                     "run_time_s",      "wall_time_s", "stats"};
-  std::map<std::string, double> out;
-  if (!report.is_object()) return out;
-  for (const auto& [key, value] : report.items())
-    if (!runtime_keys.count(key)) flatten(value, key, out);
-  return out;
-}
-
-int better_direction(const std::string& metric) {
-  if (metric.find("mean_error") != std::string::npos) return 0;  // a bias: neither way is better
-  const std::string name = metric.substr(metric.rfind('.') + 1);
-  for (const char* up : {"mota", "idf1", "precision", "recall", "tp", "mostly_tracked", "selected_frames", "on_target"})
-    if (name == up) return 1;
-  for (const char* down : {"motp_m", "idsw", "fp", "fn", "fragmentations", "mostly_lost", "rmse_m", "x", "y", "z",
-                           "lag_s", "switches", "off_target", "missing"})
-    if (name == down) return -1;
-  if (metric.find("rmse") != std::string::npos) return -1;
-  return 0;
 }
 
 }  // namespace kestrel::cli

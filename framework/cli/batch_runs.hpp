@@ -2,7 +2,6 @@
 // Runs many `kestrel run` jobs as child processes, a few at a time, and reads back their
 // report.json files. Shared by `kestrel sweep` and `kestrel ab`.
 #include <filesystem>
-#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -21,12 +20,5 @@ struct BatchResult {
 
 /// Runs the jobs with at most `parallel` at once; each job's output goes to report_dir/run.log.
 std::vector<BatchResult> run_batch(const std::vector<BatchJob>& jobs, int parallel);
-
-/// The numeric metrics of a report's evaluator sections, as "section.key" (nested keys joined
-/// with dots); the runtime's own keys (stats, graph, ...) are left out.
-std::map<std::string, double> report_metrics(const nlohmann::json& report);
-
-/// +1 if a larger value of this metric is better, -1 if smaller is better, 0 if unknown.
-int better_direction(const std::string& metric);
 
 }  // namespace kestrel::cli

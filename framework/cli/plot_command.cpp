@@ -66,7 +66,8 @@ int plot_command(const PlotArgs& args) {
           if (used == cells[i].size()) return v;
         } catch (const std::exception&) {
         }
-        throw Error(SourceLocation{args.csv, number, 0}, "column " + header[i] + " is not a number: '" + cells[i] + "'");
+        throw Error(SourceLocation{args.csv, number, 0},
+                    "column " + header[i] + " is not a number: '" + cells[i] + "'");
       };
       for (std::size_t p = 0; p < panels.size(); ++p)
         for (std::size_t c = 0; c < panel_columns[p].size(); ++c) {

@@ -1,0 +1,71 @@
+#include "experiment_analysis.hpp"
+
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace kestrel::cli {
+
+SweepSummary summarise_sweep(const SweepPlan& plan, const std::vector<BatchResult>& results) {
+  SweepSummary s;
+  for (const auto& r : results) {
+    s.runs.push_back(report_metrics(r.report));
+    s.exit_codes.push_back(r.exit_code);
+    for (const auto& [k, _] : s.runs.back()) s.metric_names.insert(k);
+    if (r.exit_code != 0) ++s.failed;
+  }
+  s.means.resize(plan.grid.size());
+  for (std::size_t g = 0; g < plan.grid.size(); ++g)
+    for (const auto& m : s.metric_names) {
+      std::vector<double> values;
+      for (std::size_t j = 0; j < s.runs.size(); ++j)
+        if (plan.point_of(j) == g)
+          if (const auto it = s.runs[j].find(m); it != s.runs[j].end()) values.push_back(it->second);
+      s.means[g][m] = mean(values);
+    }
+  return s;
+}
+
+namespace {
+
+// "B" if B is better with 95% confidence, "A" if A is, "equal" if every pair was equal.
+std::string verdict(const PairedDifference& d, int direction) {
+  if (d.sd_difference == 0 && d.mean_difference == 0) return "equal";
+  if (d.ci95.contains(0) || std::isnan(d.ci95.low)) return "no significant difference";
+  return (d.mean_difference > 0) == (direction > 0) ? "B" : "A";
+}
+
+}  // namespace
+
+AbSummary summarise_ab(const std::vector<BatchResult>& results) {
+  AbSummary summary;
+  // Paired by seed: the same scenario and noise for both graphs.
+  std::map<std::string, AbRow> rows;
+  for (std::size_t s = 0; 2 * s + 1 < results.size(); ++s) {
+    const auto& a = results[2 * s];
+    const auto& b = results[2 * s + 1];
+    if (a.exit_code != 0 || b.exit_code != 0) {
+      ++summary.failed_seeds;
+      continue;
+    }
+    const Metrics ma = report_metrics(a.report), mb = report_metrics(b.report);
+    for (const auto& [k, va] : ma)
+      if (const auto it = mb.find(k); it != mb.end()) {
+        AbRow& row = rows[k];
+        row.metric = k;
+        row.seeds.push_back(static_cast<int>(s) + 1);
+        row.a.push_back(va);
+        row.b.push_back(it->second);
+      }
+  }
+  for (auto& [metric, row] : rows) {
+    const int direction = better_direction(metric);
+    if (direction == 0 || !headline(metric)) continue;
+    row.difference = paired_difference(row.a, row.b);
+    row.better = verdict(row.difference, direction);
+    summary.rows.push_back(row);
+  }
+  return summary;
+}
+
+}  // namespace kestrel::cli

@@ -1,0 +1,42 @@
+#pragma once
+// What the runs of a sweep or an A/B comparison say: metrics per run, means over seeds, and for
+// A/B the paired difference of each metric with a verdict on which side is better.
+#include <set>
+#include <string>
+#include <vector>
+
+#include "batch_runs.hpp"
+#include "report_metrics.hpp"
+#include "run_plan.hpp"
+#include "statistics.hpp"
+
+namespace kestrel::cli {
+
+struct SweepSummary {
+  std::vector<Metrics> runs;           ///< per job, as planned
+  std::vector<int> exit_codes;         ///< per job
+  std::set<std::string> metric_names;  ///< every metric of any run
+  std::vector<Metrics> means;          ///< per grid point: mean over the seeds that have the metric
+  std::size_t failed = 0;              ///< runs that exited non-zero
+};
+
+SweepSummary summarise_sweep(const SweepPlan& plan, const std::vector<BatchResult>& results);
+
+/// One metric compared between A and B over the seeds where both runs succeeded.
+struct AbRow {
+  std::string metric;
+  std::vector<int> seeds;
+  std::vector<double> a, b;  ///< per seed
+  PairedDifference difference;
+  std::string better;  ///< "A", "B", "no significant difference" or "equal"
+};
+
+struct AbSummary {
+  std::vector<AbRow> rows;  ///< by metric name
+  std::size_t failed_seeds = 0;
+};
+
+/// results[2(s-1)] is A with seed s, results[2(s-1)+1] is B with seed s (as plan_ab makes them).
+AbSummary summarise_ab(const std::vector<BatchResult>& results);
+
+}  // namespace kestrel::cli

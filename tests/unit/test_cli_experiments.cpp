@@ -1,0 +1,65 @@
+// The parts of `kestrel sweep` and `kestrel ab` on their own: planning the runs, the statistics,
+// and what the summaries say about reports whose numbers are known.
+#include <gmock/gmock.h>
+
+#include <cmath>
+
+#include "experiment_analysis.hpp"
+#include "kestrel/error.hpp"
+#include "run_plan.hpp"
+#include "statistics.hpp"
+
+using namespace kestrel::cli;
+using ::testing::ElementsAre;
+
+TEST(RunPlan, ParsesRangesWithTheStopIncluded) {
+  EXPECT_THAT(parse_range("tracker.r=0.5:2:0.5").values, ElementsAre("0.5", "1", "1.5", "2"));
+  EXPECT_THAT(parse_range("a.b=0.1:0.3:0.1").values, ElementsAre("0.1", "0.2", "0.3"));
+  EXPECT_EQ(parse_range("a.b=1:1:1").key, "a.b");
+  EXPECT_THROW(parse_range("a.b"), kestrel::Error);
+  EXPECT_THROW(parse_range("a.b=2:1:1"), kestrel::Error);
+  EXPECT_THROW(parse_range("a.b=1:2:0"), kestrel::Error);
+}
+
+TEST(RunPlan, SweepRunsEveryGridPointWithEverySeed) {
+  SweepArgs args;
+  args.graph = "g.yaml";
+  args.params = {"a.x=1:2:1", "b.y=0:10:5"};
+  args.overrides = {"c.z=3"};
+  args.seeds = 2;
+  args.duration = 1.5;
+  args.report_dir = "out";
+  const SweepPlan plan = plan_sweep(args);
+  ASSERT_EQ(plan.grid.size(), 6u);
+  EXPECT_THAT(plan.grid[4], ElementsAre("2", "5"));
+  ASSERT_EQ(plan.jobs.size(), 12u);
+  EXPECT_EQ(plan.point_of(9), 4u);
+  EXPECT_EQ(plan.seed_of(9), 2);
+  EXPECT_EQ(plan.jobs[9].report_dir, std::filesystem::path("out/runs/004_seed2"));
+  EXPECT_THAT(plan.jobs[9].args,
+              ElementsAre("run", "g.yaml", "--seed", "2", "--report", "out/runs/004_seed2", "--no-progress", "--set",
+                          "c.z=3", "--set", "a.x=2", "--set", "b.y=5", "--duration", "1.5"));
+}
+
+TEST(RunPlan, AbAlternatesTheSidesSeedBySeed) {
+  AbArgs args;
+  args.graph_a = args.graph_b = "g.yaml";
+  args.overrides = {"n.p=1"};
+  args.overrides_b = {"n.q=2"};
+  args.seeds = 3;
+  args.report_dir = "out";
+  const AbPlan plan = plan_ab(args);
+  ASSERT_EQ(plan.jobs.size(), 6u);
+  EXPECT_EQ(plan.jobs[3].report_dir, std::filesystem::path("out/runs/B_seed2"));
+  EXPECT_THAT(plan.sets_a, ElementsAre("n.p=1"));
+  EXPECT_THAT(plan.sets_b, ElementsAre("n.p=1", "n.q=2"));
+  args.seeds = 1;
+  EXPECT_THROW(plan_ab(args), kestrel::Error);
+}
+
+TEST(Statistics, MeanAndSampleStandardDeviation) {
+  EXPECT_DOUBLE_EQ(mean({1, 2, 3, 4}), 2.5);
+  EXPECT_TRUE(std::isnan(mean({})));
+  EXPECT_NEAR(sample_sd({2, 4, 4, 4, 5, 5, 7, 9}), std::sqrt(32.0 / 7.0), 1e-12);
+  EXPECT_EQ(sample_sd({3}), 0.0);
+}
