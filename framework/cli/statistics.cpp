@@ -1,5 +1,6 @@
 #include "statistics.hpp"
 
+#include <boost/math/distributions/students_t.hpp>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -22,13 +23,9 @@ double sample_sd(const std::vector<double>& values) {
 }
 
 double t_quantile(double p, double df) {
-  static const double table[] = {0,     12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228,
-                                 2.201, 2.179,  2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086, 2.080,
-                                 2.074, 2.069,  2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042};
-  if (p != 0.975) throw Error("only the 97.5% quantile of Student's t is tabulated");
-  const int n = static_cast<int>(df);
-  if (n <= 0) return std::numeric_limits<double>::quiet_NaN();
-  return n <= 30 ? table[n] : 1.96 + 2.4 / n;  // close to the exact values beyond 30
+  // Boost would throw on a domain error; no spread to measure is "no interval" here.
+  if (!(df > 0) || !(p > 0 && p < 1)) return std::numeric_limits<double>::quiet_NaN();
+  return boost::math::quantile(boost::math::students_t_distribution<double>(df), p);
 }
 
 PairedDifference paired_difference(const std::vector<double>& a, const std::vector<double>& b) {

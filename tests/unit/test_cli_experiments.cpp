@@ -63,3 +63,32 @@ TEST(Statistics, MeanAndSampleStandardDeviation) {
   EXPECT_NEAR(sample_sd({2, 4, 4, 4, 5, 5, 7, 9}), std::sqrt(32.0 / 7.0), 1e-12);
   EXPECT_EQ(sample_sd({3}), 0.0);
 }
+
+// Reference values: Student's t quantiles as printed in statistical tables (and by R's qt).
+TEST(Statistics, StudentsTQuantiles) {
+  EXPECT_NEAR(t_quantile(0.975, 9), 2.262157, 1e-6);
+  EXPECT_NEAR(t_quantile(0.975, 1), 12.706205, 1e-6);
+  EXPECT_NEAR(t_quantile(0.975, 40), 2.021075, 1e-6);
+  EXPECT_NEAR(t_quantile(0.975, 1000), 1.962339, 1e-6);
+  EXPECT_NEAR(t_quantile(0.995, 5), 4.032143, 1e-6);
+  EXPECT_NEAR(t_quantile(0.5, 7), 0.0, 1e-12);
+  EXPECT_TRUE(std::isnan(t_quantile(0.975, 0)));
+}
+
+// Student's sleep data (Biometrika, 1908), paired: R's t.test(extra ~ group, data = sleep,
+// paired = TRUE) gives a mean difference of 1.58 with 95% interval [0.7001142, 2.4598858].
+TEST(Statistics, PairedDifferenceOfStudentsSleepData) {
+  const std::vector<double> a = {0.7, -1.6, -0.2, -1.2, -0.1, 3.4, 3.7, 0.8, 0.0, 2.0};
+  const std::vector<double> b = {1.9, 0.8, 1.1, 0.1, -0.1, 4.4, 5.5, 1.6, 4.6, 3.4};
+  const PairedDifference d = paired_difference(a, b);
+  EXPECT_EQ(d.n, 10u);
+  EXPECT_NEAR(d.mean_a, 0.75, 1e-12);
+  EXPECT_NEAR(d.mean_b, 2.33, 1e-12);
+  EXPECT_NEAR(d.mean_difference, 1.58, 1e-12);
+  EXPECT_NEAR(d.sd_difference, 1.2299955, 1e-7);
+  EXPECT_NEAR(d.ci95.low, 0.7001142, 1e-7);
+  EXPECT_NEAR(d.ci95.high, 2.4598858, 1e-7);
+  // One pair has no spread to estimate: no interval.
+  EXPECT_TRUE(std::isnan(paired_difference({1}, {2}).ci95.low));
+  EXPECT_THROW(paired_difference({1, 2}, {1}), kestrel::Error);
+}
