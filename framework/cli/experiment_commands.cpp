@@ -3,31 +3,28 @@
 #include <cstdio>
 
 #include "batch_runs.hpp"
+#include "command_errors.hpp"
 #include "commands.hpp"
 #include "experiment_analysis.hpp"
 #include "experiment_output.hpp"
-#include "kestrel/error.hpp"
-#include "kestrel/runtime/graph.hpp"
-#include "kestrel/runtime/plugin_host.hpp"
+#include "graph_loading.hpp"
 #include "run_plan.hpp"
 
 namespace kestrel::cli {
 
 namespace {
 
-// Fails early, before hundreds of runs, if the graph or an override is wrong.
+// Fails early, before hundreds of runs, if the graph or an override is wrong; exits as `kestrel
+// validate` would.
 void check_graph(const std::string& graph, const std::vector<std::string>& overrides) {
-  const GraphSource source = GraphSource::from_file(graph);
-  PluginHost plugins;
-  plugins.load_search_path(source.plugin_paths());
-  const BuildResult r = build_graph(source, plugins.registry(), overrides);
-  if (r.diagnostics.has_errors()) throw Error(r.diagnostics.str() + graph + ": invalid, nothing was run");
+  if (!load_graph({graph, overrides}, "nothing was run").graph)
+    throw CommandError(kInvalidGraph, graph + " is invalid");
 }
 
 }  // namespace
 
 int sweep_command(const SweepArgs& args) {
-  try {
+  return run_command_body("sweep", [&] {
     const SweepPlan plan = plan_sweep(args);
     check_graph(args.graph, plan.sets_for(0));
     std::fprintf(stderr, "[kestrel] sweep: %zu grid points x %d seeds = %zu runs\n", plan.grid.size(), plan.seeds,
@@ -37,14 +34,11 @@ int sweep_command(const SweepArgs& args) {
     const std::string md = write_sweep_outputs(args.report_dir, args.graph, plan, summary);
     std::fputs(md.c_str(), stdout);
     return summary.failed ? kRunFailed : kOk;
-  } catch (const Error& e) {
-    std::fprintf(stderr, "kestrel sweep: %s\n", e.what());
-    return kUsage;
-  }
+  });
 }
 
 int ab_command(const AbArgs& args) {
-  try {
+  return run_command_body("ab", [&] {
     const AbPlan plan = plan_ab(args);
     check_graph(args.graph_a, plan.sets_a);
     check_graph(args.graph_b, plan.sets_b);
@@ -53,10 +47,7 @@ int ab_command(const AbArgs& args) {
     const std::string md = write_ab_outputs(args.report_dir, args, summary);
     std::fputs(md.c_str(), stdout);
     return summary.failed_seeds ? kRunFailed : kOk;
-  } catch (const Error& e) {
-    std::fprintf(stderr, "kestrel ab: %s\n", e.what());
-    return kUsage;
-  }
+  });
 }
 
 }  // namespace kestrel::cli

@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -86,6 +87,37 @@ connections:
   - {from: slow.out, to: sink.in, policy: block 4}
 )";
 
+// Live processes (not zombies) whose command line contains `needle`.
+std::vector<pid_t> processes_with(const std::string& needle) {
+  std::vector<pid_t> found;
+  for (const auto& entry : fs::directory_iterator("/proc")) {
+    const std::string name = entry.path().filename().string();
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::string cmdline = read(entry.path() / "cmdline");
+    std::replace(cmdline.begin(), cmdline.end(), '\0', ' ');
+    const std::string stat = read(entry.path() / "stat");
+    const auto state = stat.rfind(')');
+    if (state == std::string::npos || state + 2 >= stat.size() || stat[state + 2] == 'Z') continue;
+    if (cmdline.find(needle) != std::string::npos) found.push_back(std::stoi(name));
+  }
+  return found;
+}
+
+// Waits up to `seconds` for the process to exit; kills it if it does not (returns -1 then).
+int wait_exit_within(const Process& p, double seconds) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  int status = 0;
+  while (waitpid(p.pid, &status, WNOHANG) == 0) {
+    if (std::chrono::steady_clock::now() > deadline) {
+      kill(p.pid, SIGKILL);
+      waitpid(p.pid, &status, 0);
+      return -1;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
 }  // namespace
 
 class CleanShutdown : public ::testing::TestWithParam<int> {};
@@ -110,6 +142,39 @@ TEST_P(CleanShutdown, SignalDrainsFlushesAndExitsZero) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Signals, CleanShutdown, ::testing::Values(SIGINT, SIGTERM));
+
+// A sweep stopped by a signal stops its runs (each drains and writes its report), waits for
+// them and exits with 128 + the signal: no `kestrel run` is left behind.
+class InterruptedSweep : public ::testing::TestWithParam<int> {};
+
+TEST_P(InterruptedSweep, StopsItsRunsAndLeavesNoneBehind) {
+  const fs::path dir = temp_dir("sweep-signal" + std::to_string(GetParam()));
+  const fs::path graph = write_graph(dir, kRealtimeForever);
+  const fs::path runs = dir / "sweep" / "runs";
+  Process p = start({"sweep", graph.string(), "--param", "src.rate_hz=100:200:100", "--jobs", "2", "--report",
+                     (dir / "sweep").string()},
+                    dir / "output.txt");
+  // Both runs (realtime, no duration: they would run for ever) are under way.
+  for (int i = 0; i < 200 && processes_with(runs.string()).size() < 2; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  ASSERT_EQ(processes_with(runs.string()).size(), 2u) << read(p.output);
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  ASSERT_EQ(kill(p.pid, GetParam()), 0);
+  const int code = wait_exit_within(p, 60);
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  const auto survivors = processes_with(runs.string());
+  for (const pid_t pid : survivors) kill(pid, SIGKILL);  // leave nothing running, pass or fail
+  EXPECT_TRUE(survivors.empty()) << survivors.size() << " run(s) survived the sweep";
+  EXPECT_EQ(code, 128 + GetParam()) << read(p.output);
+  EXPECT_THAT(read(p.output), HasSubstr("interrupted"));
+  for (const char* run : {"000_seed1", "001_seed1"}) {
+    const auto report = nlohmann::json::parse(read(runs / run / "report.json"), nullptr, false);
+    EXPECT_EQ(report.is_object() ? report.value("outcome", "") : "no report", "stopped") << run;
+  }
+  EXPECT_FALSE(fs::exists(dir / "sweep" / "sweep.csv"));  // a partial sweep is not summarised
+}
+
+INSTANTIATE_TEST_SUITE_P(Signals, InterruptedSweep, ::testing::Values(SIGINT, SIGTERM));
 
 TEST(Cli, ExitCodes) {
   const fs::path dir = temp_dir("codes");
@@ -142,6 +207,41 @@ connections:
   EXPECT_THAT(out, HasSubstr("did you mean 'fail_every'?"));
 
   EXPECT_EQ(run_cli({"inspect", "no_such_type"}), 4);
+}
+
+// sweep and ab check the graph before any run, and exit as `run` and `validate` do.
+TEST(Cli, SweepAndAbExitAsRunDoesOnAnInvalidGraph) {
+  const fs::path dir = temp_dir("experiment-codes");
+  const fs::path bad = write_graph(temp_dir("experiment-bad"), "nodes:\n  - {id: a, type: relai}\n");
+  const fs::path good = write_graph(dir, R"(nodes:
+  - {id: src, type: counter_source, params: {count: 3}}
+  - {id: sink, type: collector}
+connections:
+  - {from: src.out, to: sink.in}
+)");
+  const std::string missing = (dir / "missing.yaml").string();
+  std::string out;
+  auto report = [&](const std::string& name) { return (dir / name).string(); };
+  EXPECT_EQ(run_cli({"sweep", missing, "--param", "src.count=1:2:1", "--report", report("s1")}, &out), 3) << out;
+  EXPECT_THAT(out, HasSubstr("missing.yaml: error: no such graph file"));
+  EXPECT_EQ(run_cli({"sweep", bad.string(), "--param", "src.count=1:2:1", "--report", report("s2")}, &out), 3) << out;
+  EXPECT_THAT(out, HasSubstr("unknown node type 'relai'"));
+  EXPECT_EQ(run_cli({"sweep", good.string(), "--param", "src.cout=1:2:1", "--report", report("s3")}, &out), 3) << out;
+  EXPECT_THAT(out, HasSubstr("did you mean 'count'?"));
+  EXPECT_EQ(
+      run_cli({"sweep", good.string(), "--param", "src.count=1:2:1", "--set", "sink.kep=1", "--report", report("s4")}),
+      3);
+  EXPECT_EQ(run_cli({"ab", bad.string(), good.string(), "--seeds", "2", "--report", report("a1")}, &out), 3) << out;
+  EXPECT_EQ(run_cli({"ab", good.string(), missing, "--seeds", "2", "--report", report("a2")}), 3);
+  EXPECT_EQ(
+      run_cli({"ab", good.string(), good.string(), "--set-b", "src.cout=1", "--seeds", "2", "--report", report("a3")}),
+      3);
+  // Nothing was run.
+  for (const char* name : {"s1", "s2", "s3", "s4", "a1", "a2", "a3"}) EXPECT_FALSE(fs::exists(dir / name / "runs"));
+  // The command line itself: still 2.
+  EXPECT_EQ(run_cli({"sweep", good.string(), "--param", "src.count=2:1:1", "--report", report("s5")}), 2);
+  EXPECT_EQ(run_cli({"sweep", good.string(), "--param", "src.count", "--report", report("s6")}), 2);
+  EXPECT_EQ(run_cli({"ab", good.string(), good.string(), "--seeds", "1", "--report", report("a4")}), 2);
 }
 
 TEST(Cli, InspectPluginsAndDotDescribeTheGraph) {

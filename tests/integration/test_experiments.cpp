@@ -45,10 +45,10 @@ TEST(Experiments, SweepRunsTheGridWithEverySeed) {
   EXPECT_TRUE(fs::exists(dir / "sweep.md"));
   EXPECT_TRUE(fs::exists(dir / "sweep.png"));
   EXPECT_TRUE(fs::exists(dir / "runs" / "001_seed2" / "report.json"));
-  // A bad parameter fails before any run.
+  // A bad parameter fails before any run, as an invalid graph.
   EXPECT_EQ(kestrel({"sweep", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--param", "tracker.rr=0.5:1:0.5",
                      "--report", (dir / "bad").string()}),
-            2);
+            3);
   EXPECT_FALSE(fs::exists(dir / "bad" / "runs"));
 }
 
@@ -89,10 +89,10 @@ TEST(Experiments, AbComparesSettingsOfOneGraph) {
   const auto& rmse = ab.at("metrics").at("tracking.rmse_m");
   EXPECT_NE(rmse.at("mean_a").get<double>(), rmse.at("mean_b").get<double>());
   EXPECT_THAT(read(dir / "ab.md"), ::testing::HasSubstr("with tracker.r=5.0"));
-  // An override one side's graph does not accept fails before any run.
+  // An override one side's graph does not accept fails before any run, as an invalid graph.
   EXPECT_EQ(
       kestrel({"ab", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml",
                "--set-b", "tracker.particles=10", "--report", (dir / "bad").string()}),
-      2);
+      3);
   EXPECT_FALSE(fs::exists(dir / "bad" / "runs"));
 }
