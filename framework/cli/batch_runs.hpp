@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "command_errors.hpp"
+
 namespace kestrel::cli {
 
 struct BatchJob {
@@ -15,10 +17,23 @@ struct BatchJob {
 
 struct BatchResult {
   int exit_code = 0;
-  nlohmann::json report;  ///< empty if the run wrote none
+  nlohmann::json report;  ///< null if the run wrote none
+};
+
+/// SIGINT or SIGTERM stopped the batch; its code is 128 + the signal, as a shell reports it.
+class Interrupted : public CommandError {
+ public:
+  Interrupted(int signal, const std::string& message)
+      : CommandError(static_cast<ExitCode>(128 + signal), message), signal_(signal) {}
+  int signal() const { return signal_; }
+
+ private:
+  int signal_;
 };
 
 /// Runs the jobs with at most `parallel` at once; each job's output goes to report_dir/run.log.
+/// On SIGINT or SIGTERM it starts no more runs, stops the running ones (each drains and writes
+/// its report; a second signal, or 20 s, kills them), waits for them and throws Interrupted.
 std::vector<BatchResult> run_batch(const std::vector<BatchJob>& jobs, int parallel);
 
 }  // namespace kestrel::cli
