@@ -13,6 +13,7 @@
 #include <map>
 
 #include "kestrel/error.hpp"
+#include "output_files.hpp"
 #include "report_metrics.hpp"
 
 namespace kestrel::cli {
@@ -61,28 +62,34 @@ class BlockedSignals {
 // Each run gets its own process group, so that a Ctrl-C at the terminal reaches the batch only,
 // which then stops each run once (a run signalled twice quits at once, without its report).
 pid_t spawn(const std::string& exe, const BatchJob& job, const sigset_t& child_mask) {
-  std::filesystem::create_directories(job.report_dir);
+  make_folder(job.report_dir);
   // Everything the child needs is made before fork: after it, only async-signal-safe calls.
   std::vector<std::string> argv_strings = {exe};
   argv_strings.insert(argv_strings.end(), job.args.begin(), job.args.end());
   std::vector<char*> argv;
   for (auto& s : argv_strings) argv.push_back(s.data());
   argv.push_back(nullptr);
-  const std::string log = (job.report_dir / "run.log").string();
+  const std::filesystem::path log = job.report_dir / "run.log";
+  const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw CommandError(kRunFailed, "cannot write " + log.string() + ": " + std::strerror(errno));
   const pid_t parent = getpid();
   const pid_t pid = fork();
-  if (pid < 0) throw Error("cannot start a run: " + std::string(std::strerror(errno)));
+  if (pid < 0) {
+    const int error = errno;
+    close(fd);
+    throw Error("cannot start a run: " + std::string(std::strerror(error)));
+  }
   if (pid == 0) {
     setpgid(0, 0);
     // A batch killed outright (SIGKILL) takes its runs along instead of leaving them running.
     prctl(PR_SET_PDEATHSIG, SIGTERM);
     if (getppid() != parent) _exit(127);
-    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd < 0 || dup2(fd, STDOUT_FILENO) < 0 || dup2(fd, STDERR_FILENO) < 0) _exit(127);
+    if (dup2(fd, STDOUT_FILENO) < 0 || dup2(fd, STDERR_FILENO) < 0) _exit(127);
     pthread_sigmask(SIG_SETMASK, &child_mask, nullptr);
     execv(exe.c_str(), argv.data());
     _exit(127);
   }
+  close(fd);
   setpgid(pid, pid);  // from both sides: the group exists before either goes on
   return pid;
 }

@@ -8,6 +8,7 @@
 #include "experiment_analysis.hpp"
 #include "experiment_output.hpp"
 #include "graph_loading.hpp"
+#include "output_files.hpp"
 #include "run_plan.hpp"
 
 namespace kestrel::cli {
@@ -27,6 +28,7 @@ int sweep_command(const SweepArgs& args) {
   return run_command_body("sweep", [&] {
     const SweepPlan plan = plan_sweep(args);
     check_graph(args.graph, plan.sets_for(0));
+    make_folder(std::filesystem::path(args.report_dir) / "runs");
     std::fprintf(stderr, "[kestrel] sweep: %zu grid points x %d seeds = %zu runs\n", plan.grid.size(), plan.seeds,
                  plan.jobs.size());
     const auto results = run_batch(plan.jobs, jobs_or_cores(args.jobs));
@@ -42,6 +44,7 @@ int ab_command(const AbArgs& args) {
     const AbPlan plan = plan_ab(args);
     check_graph(args.graph_a, plan.sets_a);
     check_graph(args.graph_b, plan.sets_b);
+    make_folder(std::filesystem::path(args.report_dir) / "runs");
     const auto results = run_batch(plan.jobs, jobs_or_cores(args.jobs));
     const AbSummary summary = summarise_ab(results);
     const std::string md = write_ab_outputs(args.report_dir, args, summary);

@@ -4,20 +4,13 @@
 #include <fmt/ranges.h>
 
 #include <cstdio>
-#include <fstream>
 
-#include "kestrel/error.hpp"
 #include "kestrel/plot/line_plot.hpp"
+#include "output_files.hpp"
 
 namespace kestrel::cli {
 
 namespace {
-
-void write(const std::filesystem::path& file, const std::string& text) {
-  std::ofstream out(file);
-  out << text;
-  if (!out) throw Error("cannot write " + file.string());
-}
 
 std::string sweep_csv(const SweepPlan& plan, const SweepSummary& summary) {
   std::string csv;
@@ -41,8 +34,8 @@ std::string sweep_csv(const SweepPlan& plan, const SweepSummary& summary) {
 
 std::string write_sweep_outputs(const std::filesystem::path& dir, const std::string& graph, const SweepPlan& plan,
                                 const SweepSummary& summary) {
-  std::filesystem::create_directories(dir);
-  write(dir / "sweep.csv", sweep_csv(plan, summary));
+  make_folder(dir);
+  write_file(dir / "sweep.csv", sweep_csv(plan, summary));
 
   std::string md = fmt::format("# Sweep of {}\n\n{} runs ({} seeds per point); mean over seeds.\n\n", graph,
                                plan.jobs.size(), plan.seeds);
@@ -77,11 +70,11 @@ std::string write_sweep_outputs(const std::filesystem::path& dir, const std::str
     panels.push_back({m + " against " + plan.params[0].key, plan.params[0].key, m, {s}});
   }
   if (!panels.empty()) {
-    plot::save_png(dir / "sweep.png", panels, 900, 260);
+    write_png(dir / "sweep.png", panels, 900, 260);
     md += "\n![metrics against " + plan.params[0].key + "](sweep.png)\n";
   }
   if (summary.failed) md += fmt::format("\n{} run(s) failed; see runs/*/run.log.\n", summary.failed);
-  write(dir / "sweep.md", md);
+  write_file(dir / "sweep.md", md);
   return md;
 }
 
@@ -128,13 +121,13 @@ std::string write_ab_outputs(const std::filesystem::path& dir, const AbArgs& arg
   }
   if (summary.failed_seeds)
     md += fmt::format("\n{} seed(s) left out: a run failed (see runs/*/run.log).\n", summary.failed_seeds);
-  std::filesystem::create_directories(dir);
+  make_folder(dir);
   if (!panels.empty()) {
-    plot::save_png(dir / "ab.png", panels, 900, 260);
+    write_png(dir / "ab.png", panels, 900, 260);
     md += "\n![A and B seed by seed](ab.png)\n";
   }
-  write(dir / "ab.md", md);
-  write(dir / "ab.json", json.dump(2) + "\n");
+  write_file(dir / "ab.md", md);
+  write_file(dir / "ab.json", json.dump(2) + "\n");
   return md;
 }
 

@@ -6,12 +6,13 @@
 #include <atomic>
 #include <csignal>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 
+#include "command_errors.hpp"
 #include "commands.hpp"
 #include "graph_loading.hpp"
 #include "kestrel/runtime/run.hpp"
+#include "output_files.hpp"
 
 namespace kestrel::cli {
 
@@ -51,13 +52,10 @@ int dot_command(const GraphArgs& args, const std::string& output) {
     std::fputs(dot.c_str(), stdout);
     return kOk;
   }
-  std::ofstream out(output);
-  out << dot;
-  if (!out) {
-    spdlog::error("cannot write {}", output);
-    return kUsage;
-  }
-  return kOk;
+  return run_command_body("dot", [&] {
+    write_file(output, dot);
+    return kOk;
+  });
 }
 
 int run_command(const RunArgs& args) {

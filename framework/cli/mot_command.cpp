@@ -9,9 +9,11 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "command_errors.hpp"
 #include "commands.hpp"
 #include "kestrel/algorithms/clear_mot.hpp"
 #include "kestrel/error.hpp"
+#include "output_files.hpp"
 
 namespace kestrel::cli {
 
@@ -61,7 +63,7 @@ double iou(const Row& a, const Row& b) {
 }  // namespace
 
 int mot_command(const MotArgs& args) {
-  try {
+  return run_command_body("mot", [&] {
     if (args.iou && args.distance) throw Error("give --iou or --dist, not both");
     const bool by_iou = !args.distance;
     const double iou_threshold = args.iou.value_or(0.5);
@@ -120,13 +122,10 @@ int mot_command(const MotArgs& args) {
                                 {"frag", s.fragmentations},
                                 {"num_objects", s.objects},
                                 {"matches", s.matches}};
-      std::ofstream(args.json) << j.dump(2) << '\n';
+      write_file(args.json, j.dump(2) + "\n");
     }
     return kOk;
-  } catch (const Error& e) {
-    std::fprintf(stderr, "kestrel mot: %s\n", e.what());
-    return kUsage;
-  }
+  });
 }
 
 }  // namespace kestrel::cli

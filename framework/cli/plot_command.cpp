@@ -5,14 +5,16 @@
 #include <limits>
 #include <sstream>
 
+#include "command_errors.hpp"
 #include "commands.hpp"
 #include "kestrel/error.hpp"
 #include "kestrel/plot/line_plot.hpp"
+#include "output_files.hpp"
 
 namespace kestrel::cli {
 
 int plot_command(const PlotArgs& args) {
-  try {
+  return run_command_body("plot", [&] {
     std::ifstream in(args.csv);
     if (!in) throw Error("cannot open " + args.csv);
     std::string line;
@@ -75,13 +77,10 @@ int plot_command(const PlotArgs& args) {
           panels[p].series[c].y.push_back(value(panel_columns[p][c]));
         }
     }
-    plot::save_png(args.output, panels, 900, 320);
+    write_png(args.output, panels, 900, 320);
     std::printf("wrote %s\n", args.output.c_str());
     return kOk;
-  } catch (const Error& e) {
-    std::fprintf(stderr, "kestrel plot: %s\n", e.what());
-    return kUsage;
-  }
+  });
 }
 
 }  // namespace kestrel::cli

@@ -300,3 +300,56 @@ TEST(Cli, MotComputesClearMotOnMotChallengeFiles) {
   EXPECT_EQ(run_cli({"mot", (dir / "missing.txt").string(), (dir / "test.txt").string()}, &out), 2);
   EXPECT_THAT(out, HasSubstr("cannot open"));
 }
+
+// An output that cannot be written (a full device, a folder that cannot be made) is an error
+// that names the file, with exit code 1, never a silent loss.
+TEST(Cli, FailedWritesNameTheFileAndExitOne) {
+  const fs::path dir = temp_dir("writes");
+  std::ofstream(dir / "blocker") << "a file where a folder should be\n";
+  fs::create_symlink("/dev/full", dir / "full.png");
+  std::ofstream(dir / "gt.txt") << "1,1,0,0,10,10,1,0,0,5\n2,1,0,0,10,10,1,0,0,5\n";
+  std::ofstream(dir / "table.csv") << "x,y\n1,2\n2,3\n";
+  std::string out;
+  const std::string gt = (dir / "gt.txt").string(), csv = (dir / "table.csv").string();
+
+  EXPECT_EQ(run_cli({"mot", gt, gt, "--json", "/dev/full"}, &out), 1) << out;
+  EXPECT_THAT(out, HasSubstr("cannot write /dev/full"));
+  EXPECT_EQ(run_cli({"mot", gt, gt, "--json", (dir / "blocker" / "m.json").string()}, &out), 1) << out;
+  EXPECT_THAT(out, HasSubstr("blocker/m.json"));
+
+  EXPECT_EQ(run_cli({"plot", csv, "--x", "x", "--y", "y", "-o", "/dev/full"}, &out), 1) << out;
+  EXPECT_THAT(out, HasSubstr("/dev/full"));
+  EXPECT_EQ(run_cli({"plot", csv, "--x", "x", "--y", "y", "-o", (dir / "full.png").string()}, &out), 1) << out;
+  EXPECT_THAT(out, HasSubstr("full.png"));
+  EXPECT_EQ(run_cli({"plot", csv, "--x", "x", "--y", "y", "-o", (dir / "blocker" / "p.png").string()}, &out), 1);
+  EXPECT_THAT(out, HasSubstr("blocker/p.png"));
+
+  const fs::path graph = write_graph(dir, R"(nodes:
+  - {id: src, type: counter_source, params: {count: 3}}
+  - {id: sink, type: collector}
+connections:
+  - {from: src.out, to: sink.in}
+)");
+  EXPECT_EQ(run_cli({"dot", graph.string(), "-o", "/dev/full"}, &out), 1) << out;
+  EXPECT_THAT(out, HasSubstr("cannot write /dev/full"));
+
+  // A report folder that cannot be made: nothing is run.
+  EXPECT_EQ(
+      run_cli({"sweep", graph.string(), "--param", "src.count=1:2:1", "--report", (dir / "blocker" / "sweep").string()},
+              &out),
+      1)
+      << out;
+  EXPECT_THAT(out, HasSubstr("blocker/sweep"));
+  // Summaries written to a full device.
+  fs::create_directories(dir / "sweep");
+  fs::create_symlink("/dev/full", dir / "sweep" / "sweep.csv");
+  EXPECT_EQ(
+      run_cli({"sweep", graph.string(), "--param", "src.count=1:2:1", "--report", (dir / "sweep").string()}, &out), 1)
+      << out;
+  EXPECT_THAT(out, HasSubstr("sweep.csv"));
+  fs::create_directories(dir / "ab");
+  fs::create_symlink("/dev/full", dir / "ab" / "ab.json");
+  EXPECT_EQ(run_cli({"ab", graph.string(), graph.string(), "--seeds", "2", "--report", (dir / "ab").string()}, &out), 1)
+      << out;
+  EXPECT_THAT(out, HasSubstr("ab.json"));
+}
