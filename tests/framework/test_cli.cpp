@@ -295,6 +295,18 @@ TEST(Cli, MotComputesClearMotOnMotChallengeFiles) {
     EXPECT_EQ(m.at("num_objects"), 6);
     EXPECT_NEAR(m.at("idf1").get<double>(), 8.0 / 12.0, 1e-12);
     EXPECT_NEAR(m.at("motp").get<double>(), 0.0, 1e-12);
+    // The mot_evaluator's names for the same figures (report.json's "tracking" section).
+    EXPECT_EQ(m.at("fragmentations"), 1);
+    EXPECT_EQ(m.at("mostly_tracked"), 1);
+    EXPECT_EQ(m.at("partially_tracked"), 1);
+    EXPECT_EQ(m.at("mostly_lost"), 0);
+    EXPECT_EQ(m.at("frames"), 3);
+    EXPECT_EQ(m.contains("motp_m"), mode[0] == "--dist");  // MOTP is in metres only between points
+    EXPECT_EQ(m.at("metrics_meta").at("mota").at("higher_is_better"), true);
+    // The names kestrel mot used before, kept for a release.
+    EXPECT_EQ(m.at("mt"), 1);
+    EXPECT_EQ(m.at("pt"), 1);
+    EXPECT_EQ(m.at("ml"), 0);
   }
   std::string out;
   EXPECT_EQ(run_cli({"mot", (dir / "missing.txt").string(), (dir / "test.txt").string()}, &out), 2);

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 
 extern char** environ;
 namespace fs = std::filesystem;
@@ -95,4 +96,27 @@ TEST(Experiments, AbComparesSettingsOfOneGraph) {
                "--set-b", "tracker.particles=10", "--report", (dir / "bad").string()}),
       3);
   EXPECT_FALSE(fs::exists(dir / "bad" / "runs"));
+}
+
+// `kestrel mot` and the mot_evaluator node name the CLEAR-MOT figures alike: every number in a
+// real "tracking" section is in `kestrel mot --json` too, but for the figures of the selected
+// track and of time, which MOTChallenge files do not have.
+TEST(Experiments, MotCommandAndMotEvaluatorShareTheirKeys) {
+  const fs::path dir = fs::temp_directory_path() / "kestrel-mot-keys-test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  ASSERT_EQ(kestrel({"run", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--duration", "0.5", "--report",
+                     (dir / "run").string(), "--no-progress"}),
+            0);
+  const auto tracking = nlohmann::json::parse(read(dir / "run" / "report.json")).at("tracking");
+  std::ofstream(dir / "gt.txt") << "1,1,0,0,10,10,1,0,0,5\n2,1,0,0,10,10,1,0,0,5\n";
+  ASSERT_EQ(kestrel({"mot", (dir / "gt.txt").string(), (dir / "gt.txt").string(), "--dist", "0.5", "--json",
+                     (dir / "mot.json").string()}),
+            0);
+  const auto mot = nlohmann::json::parse(read(dir / "mot.json"));
+  const std::set<std::string> tracker_only = {"rmse_m", "rmse_axes_m", "lag_s", "selected_frames", "target"};
+  for (const auto& [key, value] : tracking.items()) {
+    if (tracker_only.count(key)) continue;
+    EXPECT_TRUE(mot.contains(key)) << "kestrel mot --json has no '" << key << "'";
+  }
 }
