@@ -35,6 +35,11 @@ std::string verdict(const PairedDifference& d, int direction) {
   return (d.mean_difference > 0) == (direction > 0) ? "B" : "A";
 }
 
+std::vector<double> magnitudes(std::vector<double> values) {
+  for (double& v : values) v = std::abs(v);
+  return values;
+}
+
 }  // namespace
 
 AbSummary summarise_ab(const std::vector<BatchResult>& results) {
@@ -61,7 +66,9 @@ AbSummary summarise_ab(const std::vector<BatchResult>& results) {
   for (auto& [metric, row] : rows) {
     const int direction = better_direction(metric);
     if (direction == 0 || !headline(metric)) continue;
-    row.difference = paired_difference(row.a, row.b);
+    row.by_magnitude = by_magnitude(metric);
+    row.difference =
+        row.by_magnitude ? paired_difference(magnitudes(row.a), magnitudes(row.b)) : paired_difference(row.a, row.b);
     row.better = verdict(row.difference, direction);
     summary.rows.push_back(row);
   }

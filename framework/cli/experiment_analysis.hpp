@@ -26,7 +26,8 @@ SweepSummary summarise_sweep(const SweepPlan& plan, const std::vector<BatchResul
 struct AbRow {
   std::string metric;
   std::vector<int> seeds;
-  std::vector<double> a, b;  ///< per seed
+  std::vector<double> a, b;   ///< per seed
+  bool by_magnitude = false;  ///< the difference is of |a| and |b|
   PairedDifference difference;
   std::string better;  ///< "A", "B", "no significant difference" or "equal"
 };

@@ -104,7 +104,9 @@ std::string write_ab_outputs(const std::filesystem::path& dir, const AbArgs& arg
                                    {"difference", d.mean_difference},
                                    {"ci95", {d.ci95.low, d.ci95.high}},
                                    {"better", row.better}};
-    md += fmt::format("| {} | {:.4g} | {:.4g} | {:+.4g} | [{:+.4g}, {:+.4g}] | {} |\n", row.metric, d.mean_a, d.mean_b,
+    if (row.by_magnitude) json["metrics"][row.metric]["by_magnitude"] = true;
+    const std::string name = row.by_magnitude ? row.metric + " (magnitude)" : row.metric;
+    md += fmt::format("| {} | {:.4g} | {:.4g} | {:+.4g} | [{:+.4g}, {:+.4g}] | {} |\n", name, d.mean_a, d.mean_b,
                       d.mean_difference, d.ci95.low, d.ci95.high, row.better);
     if (row.better != "equal" && panels.size() < 4) {
       plot::Panel panel{fmt::format("{} per seed (better: {})", row.metric, row.better), "seed", row.metric, {}};

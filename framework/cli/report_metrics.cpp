@@ -46,6 +46,8 @@ int better_direction(const std::string& metric) {
   return 0;
 }
 
+bool by_magnitude(const std::string& metric) { return metric.substr(metric.rfind('.') + 1) == "lag_s"; }
+
 bool headline(const std::string& metric) {
   static const std::set<std::string> names = {"mota",      "motp_m", "idf1",   "idsw",  "fp",      "fn",
                                               "precision", "recall", "rmse_m", "lag_s", "switches"};

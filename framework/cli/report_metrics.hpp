@@ -19,6 +19,9 @@ Metrics report_metrics(const nlohmann::json& report);
 /// +1 if a larger value of this metric is better, -1 if smaller is better, 0 if unknown.
 int better_direction(const std::string& metric);
 
+/// True if the metric is judged by its magnitude (a lag is as bad early as late).
+bool by_magnitude(const std::string& metric);
+
 /// The metrics worth a column in a summary table (the CSV and JSON keep every metric).
 bool headline(const std::string& metric);
 

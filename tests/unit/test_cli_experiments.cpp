@@ -3,6 +3,8 @@
 #include <gmock/gmock.h>
 
 #include <cmath>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
 
 #include "experiment_analysis.hpp"
 #include "kestrel/error.hpp"
@@ -91,4 +93,49 @@ TEST(Statistics, PairedDifferenceOfStudentsSleepData) {
   // One pair has no spread to estimate: no interval.
   EXPECT_TRUE(std::isnan(paired_difference({1}, {2}).ci95.low));
   EXPECT_THROW(paired_difference({1, 2}, {1}), kestrel::Error);
+}
+
+namespace {
+
+// A run's result whose report holds the given "tracking" metrics.
+BatchResult run_with(const nlohmann::json& tracking, const nlohmann::json& meta = nullptr) {
+  BatchResult r;
+  r.report = {{"outcome", "completed"}, {"tracking", tracking}};
+  if (!meta.is_null()) r.report["metrics_meta"] = meta;
+  return r;
+}
+
+// The results of an A/B run (A and B alternating, seed by seed) of one metric.
+std::vector<BatchResult> ab_results(const std::string& key, const std::vector<double>& a, const std::vector<double>& b,
+                                    const nlohmann::json& meta = nullptr) {
+  std::vector<BatchResult> results;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    results.push_back(run_with({{key, a[i]}}, meta));
+    results.push_back(run_with({{key, b[i]}}, meta));
+  }
+  return results;
+}
+
+const AbRow& row_of(const AbSummary& summary, const std::string& metric) {
+  for (const auto& row : summary.rows)
+    if (row.metric == metric) return row;
+  throw std::runtime_error("no row " + metric);
+}
+
+}  // namespace
+
+// A lag is as bad early as late: B, closer to zero on every seed, is better, though its signed
+// lag is larger.
+TEST(AbVerdict, LagIsComparedByMagnitude) {
+  const auto summary = summarise_ab(ab_results("lag_s", {-0.30, -0.25, -0.35, -0.28}, {0.05, -0.02, 0.04, 0.01}));
+  const AbRow& row = row_of(summary, "tracking.lag_s");
+  EXPECT_EQ(row.better, "B");
+  EXPECT_NEAR(row.difference.mean_a, 0.295, 1e-12);  // the mean magnitude
+  EXPECT_NEAR(row.difference.mean_b, 0.03, 1e-12);
+  EXPECT_LT(row.difference.ci95.high, 0);
+  // And the other way round.
+  EXPECT_EQ(row_of(summarise_ab(ab_results("lag_s", {0.05, -0.02, 0.04, 0.01}, {-0.30, -0.25, -0.35, -0.28})),
+                   "tracking.lag_s")
+                .better,
+            "A");
 }
