@@ -65,6 +65,9 @@ int main(int argc, char** argv) {
       ->required()
       ->delimiter(',');
   plot_cmd->add_option("-o,--output", plot.output, "PNG file to write")->required();
+  plot_cmd->add_option("--meta", plot.meta,
+                       "units and directions from this JSON's metrics_meta (a report.json); default: "
+                       "metrics_meta.json beside the CSV, as kestrel sweep writes it");
 
   SweepArgs sweep;
   auto* sweep_cmd = app.add_subcommand("sweep", "Run a graph over a grid of parameter values and seeds, in parallel");

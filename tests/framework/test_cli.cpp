@@ -365,3 +365,29 @@ connections:
       << out;
   EXPECT_THAT(out, HasSubstr("ab.json"));
 }
+
+// kestrel plot takes units from metrics_meta.json beside the CSV (as kestrel sweep leaves it), or
+// from --meta; a --meta file without metrics_meta is an input error.
+TEST(Cli, PlotReadsMetricsMeta) {
+  const fs::path dir = temp_dir("plot-meta");
+  std::ofstream(dir / "sweep.csv") << "a.x,tracking.lag_s,tracking.mota\n1,-0.2,0.9\n2,0.1,0.95\n";
+  std::ofstream(dir / "metrics_meta.json")
+      << R"({"metrics_meta": {"tracking.lag_s": {"unit": "s", "higher_is_better": false, "by_magnitude": true}}})";
+  std::ofstream(dir / "plain.json") << R"({"tracking": {"mota": 1}})";
+  const std::string csv = (dir / "sweep.csv").string();
+  std::string out;
+  EXPECT_EQ(
+      run_cli({"plot", csv, "--x", "a.x", "--y", "tracking.lag_s,tracking.mota", "-o", (dir / "a.png").string()}, &out),
+      0)
+      << out;
+  EXPECT_TRUE(fs::exists(dir / "a.png"));
+  EXPECT_EQ(run_cli({"plot", csv, "--x", "a.x", "--y", "tracking.mota", "-o", (dir / "b.png").string(), "--meta",
+                     (dir / "plain.json").string()},
+                    &out),
+            2);
+  EXPECT_THAT(out, HasSubstr("plain.json: expected a JSON object with \"metrics_meta\""));
+  EXPECT_EQ(run_cli({"plot", csv, "--x", "a.x", "--y", "tracking.mota", "-o", (dir / "c.png").string(), "--meta",
+                     (dir / "missing.json").string()},
+                    &out),
+            2);
+}
