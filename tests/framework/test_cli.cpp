@@ -103,6 +103,14 @@ std::vector<pid_t> processes_with(const std::string& needle) {
   return found;
 }
 
+// True once the process has a handler for the signal (its SigCgt mask in /proc).
+bool catches(pid_t pid, int sig) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("SigCgt:", 0) == 0) return (std::stoull(line.substr(7), nullptr, 16) >> (sig - 1)) & 1u;
+  return false;
+}
+
 // Waits up to `seconds` for the process to exit; kills it if it does not (returns -1 then).
 int wait_exit_within(const Process& p, double seconds) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
@@ -154,11 +162,15 @@ TEST_P(InterruptedSweep, StopsItsRunsAndLeavesNoneBehind) {
   Process p = start({"sweep", graph.string(), "--param", "src.rate_hz=100:200:100", "--jobs", "2", "--report",
                      (dir / "sweep").string()},
                     dir / "output.txt");
-  // Both runs (realtime, no duration: they would run for ever) are under way.
-  for (int i = 0; i < 200 && processes_with(runs.string()).size() < 2; ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  ASSERT_EQ(processes_with(runs.string()).size(), 2u) << read(p.output);
-  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  // Both runs (realtime, no duration: they would run for ever) are under way, their signal
+  // handlers in place (before that, a stopped run has no report to write).
+  auto running = [&] {
+    const auto pids = processes_with(runs.string());
+    return pids.size() == 2 && std::all_of(pids.begin(), pids.end(), [](pid_t pid) { return catches(pid, SIGTERM); });
+  };
+  for (int i = 0; i < 600 && !running(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  ASSERT_TRUE(running()) << read(p.output);
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
   ASSERT_EQ(kill(p.pid, GetParam()), 0);
   const int code = wait_exit_within(p, 60);
   std::this_thread::sleep_for(std::chrono::milliseconds(200));
