@@ -27,7 +27,10 @@ void check_graph(const std::string& graph, const std::vector<std::string>& overr
 int sweep_command(const SweepArgs& args) {
   return run_command_body("sweep", [&] {
     const SweepPlan plan = plan_sweep(args);
+    // The first and last points hold every parameter's smallest and largest value: a value out
+    // of range shows there.
     check_graph(args.graph, plan.sets_for(0));
+    if (plan.grid.size() > 1) check_graph(args.graph, plan.sets_for(plan.grid.size() - 1));
     make_folder(std::filesystem::path(args.report_dir) / "runs");
     std::fprintf(stderr, "[kestrel] sweep: %zu grid points x %d seeds = %zu runs\n", plan.grid.size(), plan.seeds,
                  plan.jobs.size());
