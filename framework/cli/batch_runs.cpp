@@ -113,7 +113,14 @@ std::vector<BatchResult> run_batch(const std::vector<BatchJob>& jobs, int parall
   Clock::time_point kill_at;
   while (!running.empty() || (!stop_signal && next < jobs.size())) {
     while (!stop_signal && next < jobs.size() && static_cast<int>(running.size()) < std::max(1, parallel)) {
-      running[spawn(exe, jobs[next], blocked.before())] = next;
+      try {
+        running[spawn(exe, jobs[next], blocked.before())] = next;
+      } catch (...) {
+        // The batch cannot go on: its running runs must not outlive it.
+        signal_all(running, SIGTERM);
+        for (const auto& [pid, _] : running) waitpid(pid, nullptr, 0);
+        throw;
+      }
       ++next;
     }
     // Reap every run that has ended.

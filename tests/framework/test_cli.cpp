@@ -134,7 +134,10 @@ TEST_P(CleanShutdown, SignalDrainsFlushesAndExitsZero) {
   const fs::path dir = temp_dir("signal" + std::to_string(GetParam()));
   const fs::path graph = write_graph(dir, kRealtimeForever);
   Process p = start({"run", graph.string(), "--report", (dir / "report").string(), "--stats"}, dir / "output.txt");
-  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  // Under way, with its handler in place: on a loaded machine loading the graph can take seconds.
+  for (int i = 0; i < 600 && !catches(p.pid, GetParam()); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  std::this_thread::sleep_for(std::chrono::milliseconds(1000));
   ASSERT_EQ(kill(p.pid, GetParam()), 0);
   EXPECT_EQ(wait_exit(p), 0) << read(p.output);
   const auto report = nlohmann::json::parse(read(dir / "report" / "report.json"));
@@ -243,13 +246,18 @@ connections:
   EXPECT_EQ(
       run_cli({"sweep", good.string(), "--param", "src.count=1:2:1", "--set", "sink.kep=1", "--report", report("s4")}),
       3);
+  // A value out of range at the end of the grid (rate_hz is at most 1e6) fails before any run too.
+  EXPECT_EQ(
+      run_cli({"sweep", good.string(), "--param", "src.rate_hz=1:2000000:1000000", "--report", report("s7")}, &out), 3)
+      << out;
   EXPECT_EQ(run_cli({"ab", bad.string(), good.string(), "--seeds", "2", "--report", report("a1")}, &out), 3) << out;
   EXPECT_EQ(run_cli({"ab", good.string(), missing, "--seeds", "2", "--report", report("a2")}), 3);
   EXPECT_EQ(
       run_cli({"ab", good.string(), good.string(), "--set-b", "src.cout=1", "--seeds", "2", "--report", report("a3")}),
       3);
   // Nothing was run.
-  for (const char* name : {"s1", "s2", "s3", "s4", "a1", "a2", "a3"}) EXPECT_FALSE(fs::exists(dir / name / "runs"));
+  for (const char* name : {"s1", "s2", "s3", "s4", "s7", "a1", "a2", "a3"})
+    EXPECT_FALSE(fs::exists(dir / name / "runs")) << name;
   // The command line itself: still 2.
   EXPECT_EQ(run_cli({"sweep", good.string(), "--param", "src.count=2:1:1", "--report", report("s5")}), 2);
   EXPECT_EQ(run_cli({"sweep", good.string(), "--param", "src.count", "--report", report("s6")}), 2);
