@@ -111,6 +111,14 @@ bool catches(pid_t pid, int sig) {
   return false;
 }
 
+// The number of threads of the process: a realtime run has one per node once it is under way.
+int threads_of(pid_t pid) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("Threads:", 0) == 0) return std::stoi(line.substr(8));
+  return 0;
+}
+
 // Waits up to `seconds` for the process to exit; kills it if it does not (returns -1 then).
 int wait_exit_within(const Process& p, double seconds) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
@@ -134,8 +142,9 @@ TEST_P(CleanShutdown, SignalDrainsFlushesAndExitsZero) {
   const fs::path dir = temp_dir("signal" + std::to_string(GetParam()));
   const fs::path graph = write_graph(dir, kRealtimeForever);
   Process p = start({"run", graph.string(), "--report", (dir / "report").string(), "--stats"}, dir / "output.txt");
-  // Under way, with its handler in place: on a loaded machine loading the graph can take seconds.
-  for (int i = 0; i < 600 && !catches(p.pid, GetParam()); ++i)
+  // Under way (its nodes' threads started), with its handler in place: on a loaded machine
+  // starting can take seconds.
+  for (int i = 0; i < 600 && !(catches(p.pid, GetParam()) && threads_of(p.pid) > 1); ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   std::this_thread::sleep_for(std::chrono::milliseconds(1000));
   ASSERT_EQ(kill(p.pid, GetParam()), 0);
