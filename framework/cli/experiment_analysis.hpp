@@ -3,6 +3,7 @@
 // A/B the paired difference of each metric with a verdict on which side is better. Which way is
 // better, and whether by magnitude, comes from the reports' metrics_meta; a metric they do not
 // describe is summarised all the same, without a verdict.
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
