@@ -7,6 +7,8 @@ find_package(fmt REQUIRED)
 find_package(spdlog REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)
 find_package(CLI11 REQUIRED)
+# Header-only: Boost.Math's Student's t distribution for the CLI's confidence intervals.
+find_package(Boost 1.74 REQUIRED)
 find_package(OpenCV 4 REQUIRED COMPONENTS core imgproc imgcodecs calib3d)
 find_package(PCL 1.13 REQUIRED COMPONENTS common filters segmentation search kdtree)
 # PCL 1.13 makes imported targets (pcl_common, pcl_filters, ...) for the components above.

@@ -57,11 +57,17 @@ int main(int argc, char** argv) {
   mot_cmd->add_option("--json", mot.json, "also write the metrics to this JSON file");
 
   PlotArgs plot;
-  auto* plot_cmd = app.add_subcommand("plot", "Plot columns of a CSV file as PNG (one panel per y entry; a+b overlays)");
+  auto* plot_cmd =
+      app.add_subcommand("plot", "Plot columns of a CSV file as PNG (one panel per y entry; a+b overlays)");
   plot_cmd->add_option("csv", plot.csv, "CSV file with a header row")->required();
   plot_cmd->add_option("--x", plot.x, "column for the x axis")->required();
-  plot_cmd->add_option("--y", plot.y, "columns to plot, one panel each; a+b overlays a and b in one panel")->required()->delimiter(',');
+  plot_cmd->add_option("--y", plot.y, "columns to plot, one panel each; a+b overlays a and b in one panel")
+      ->required()
+      ->delimiter(',');
   plot_cmd->add_option("-o,--output", plot.output, "PNG file to write")->required();
+  plot_cmd->add_option("--meta", plot.meta,
+                       "units and directions from this JSON's metrics_meta (a report.json); default: "
+                       "metrics_meta.json beside the CSV, as kestrel sweep writes it");
 
   SweepArgs sweep;
   auto* sweep_cmd = app.add_subcommand("sweep", "Run a graph over a grid of parameter values and seeds, in parallel");

@@ -3,6 +3,7 @@
 // simulator's ground truth.
 #include <fmt/format.h>
 
+#include <kestrel/algorithms/mot_metrics.hpp>
 #include <kestrel/evaluation/scoring_params.hpp>
 #include <kestrel/evaluation/truth_pairing.hpp>
 #include <kestrel/plugin.hpp>
@@ -57,29 +58,19 @@ class MotEvaluator final : public Node {
                      pairing_.unpaired());
     const TrackingSummary t = scorer_.summary(params_.max_lag_s, params_.lag_step_s);
     const algorithms::MotSummary& s = t.mot;
-    nlohmann::json json = {{"frames", s.frames},
-                           {"mota", s.mota},
-                           {"motp_m", s.motp},
-                           {"idf1", s.idf1},
-                           {"idsw", s.idsw},
-                           {"fp", s.fp},
-                           {"fn", s.fn},
-                           {"fragmentations", s.fragmentations},
-                           {"mostly_tracked", s.mostly_tracked},
-                           {"partially_tracked", s.partially_tracked},
-                           {"mostly_lost", s.mostly_lost},
-                           {"num_objects", s.objects},
-                           {"rmse_m", t.rmse},
-                           {"rmse_axes_m", {{"x", t.rmse_axes.x()}, {"y", t.rmse_axes.y()}, {"z", t.rmse_axes.z()}}},
-                           {"selected_frames", t.selected_frames},
-                           {"lag_s", t.lag_s ? nlohmann::json(*t.lag_s) : nlohmann::json(nullptr)},
-                           {"target",
-                            {{"mota", t.target.mota()},
-                             {"frames", t.target.frames},
-                             {"on_target", t.target.on},
-                             {"off_target", t.target.off},
-                             {"missing", t.target.missing},
-                             {"switches", t.target.switches}}}};
+    // The CLEAR-MOT keys are named once, for this node and `kestrel mot` alike.
+    nlohmann::json json = algorithms::mot_summary_json(s);
+    json.update({{"rmse_m", t.rmse},
+                 {"rmse_axes_m", {{"x", t.rmse_axes.x()}, {"y", t.rmse_axes.y()}, {"z", t.rmse_axes.z()}}},
+                 {"selected_frames", t.selected_frames},
+                 {"lag_s", t.lag_s ? nlohmann::json(*t.lag_s) : nlohmann::json(nullptr)},
+                 {"target",
+                  {{"mota", t.target.mota()},
+                   {"frames", t.target.frames},
+                   {"on_target", t.target.on},
+                   {"off_target", t.target.off},
+                   {"missing", t.target.missing},
+                   {"switches", t.target.switches}}}});
     const std::string md = fmt::format(
         "| frames | MOTA | MOTP [m] | IDF1 | IDSW | FP | FN | FRAG | MT/PT/ML | target RMSE [m] | lag [s] |\n"
         "|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|\n"

@@ -9,6 +9,7 @@
 #include "kestrel/algorithms/assignment.hpp"
 #include "kestrel/algorithms/clear_mot.hpp"
 #include "kestrel/algorithms/lag.hpp"
+#include "kestrel/algorithms/mot_metrics.hpp"
 
 using namespace kestrel::algorithms;
 
@@ -175,4 +176,24 @@ TEST(ClearMot, CrossingTargetsSwapIdentitiesOnce) {
   EXPECT_EQ(s.fp, 0u);
   EXPECT_EQ(s.fn, 0u);
   EXPECT_DOUBLE_EQ(s.mota, 1.0 - 2.0 / 20.0);
+}
+
+// Every reported CLEAR-MOT key is described in metrics_meta, and only those.
+TEST(ClearMot, ReportKeysAndTheirMetaMatch) {
+  kestrel::algorithms::MotSummary s;
+  s.mota = 0.5;
+  s.motp = 0.25;
+  s.fragmentations = 3;
+  const auto json = kestrel::algorithms::mot_summary_json(s);
+  const auto meta = kestrel::algorithms::mot_summary_meta("tracking");
+  EXPECT_EQ(json.at("mota"), 0.5);
+  EXPECT_EQ(json.at("motp_m"), 0.25);
+  EXPECT_EQ(json.at("fragmentations"), 3);
+  EXPECT_EQ(json.size(), meta.size());
+  for (const auto& [key, value] : json.items()) EXPECT_TRUE(meta.contains("tracking." + key)) << key;
+  EXPECT_EQ(meta.at("tracking.mota").at("higher_is_better"), true);
+  EXPECT_EQ(meta.at("tracking.motp_m").at("unit"), "m");
+  EXPECT_EQ(meta.at("tracking.idsw").at("higher_is_better"), false);
+  EXPECT_FALSE(meta.at("tracking.partially_tracked").contains("higher_is_better"));
+  EXPECT_TRUE(kestrel::algorithms::mot_summary_meta("").contains("mota"));
 }
