@@ -4,10 +4,16 @@
 # builds a plugin outside this tree. The layout and the RPATHs are in KestrelLayout.cmake.
 include(CMakePackageConfigHelpers)
 
-set(KESTREL_SHARED_LIBRARIES kestrel kestrel_plot kestrel_algorithms kestrel_tracking)
-set_target_properties(${KESTREL_SHARED_LIBRARIES} PROPERTIES INSTALL_RPATH "${KESTREL_LIBRARY_RPATH}")
+set_target_properties(kestrel kestrel_algorithms kestrel_tracking kestrel_plot PROPERTIES INSTALL_RPATH
+                                                                                  "${KESTREL_LIBRARY_RPATH}")
 
-install(TARGETS ${KESTREL_SHARED_LIBRARIES} kestrel_messages EXPORT kestrelTargets
+# Two export sets: kestrelTargets (the runtime, the messages, the algorithms and tracking
+# libraries) names no OpenCV, PCL or MRPT target; kestrel::plot draws with OpenCV, so it is the
+# optional component `plot` (find_package(kestrel COMPONENTS plot)) with its own file.
+install(TARGETS kestrel kestrel_messages kestrel_algorithms kestrel_tracking EXPORT kestrelTargets
+        LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(TARGETS kestrel_plot EXPORT kestrelPlotTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS kestrel_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
@@ -23,9 +29,17 @@ install(FILES README.md DESTINATION "${KESTREL_INSTALL_DATADIR}")
 install(DIRECTORY docs/ DESTINATION "${KESTREL_INSTALL_DATADIR}/docs")
 
 install(EXPORT kestrelTargets NAMESPACE kestrel:: DESTINATION "${KESTREL_INSTALL_CMAKEDIR}")
+install(EXPORT kestrelPlotTargets NAMESPACE kestrel:: DESTINATION "${KESTREL_INSTALL_CMAKEDIR}")
 configure_package_config_file(cmake/kestrelConfig.cmake.in "${CMAKE_BINARY_DIR}/kestrelConfig.cmake"
                               INSTALL_DESTINATION "${KESTREL_INSTALL_CMAKEDIR}")
 write_basic_package_version_file("${CMAKE_BINARY_DIR}/kestrelConfigVersion.cmake" COMPATIBILITY SameMajorVersion)
 install(FILES "${CMAKE_BINARY_DIR}/kestrelConfig.cmake" "${CMAKE_BINARY_DIR}/kestrelConfigVersion.cmake"
               cmake/KestrelPlugin.cmake
         DESTINATION "${KESTREL_INSTALL_CMAKEDIR}")
+
+# The same package in the build folder, for building plugins against a build without installing
+# it: find_package(kestrel) with CMAKE_PREFIX_PATH or kestrel_DIR set to the build folder finds
+# kestrelConfig.cmake there, and the targets point at the build's libraries and the source headers.
+export(EXPORT kestrelTargets NAMESPACE kestrel:: FILE "${CMAKE_BINARY_DIR}/kestrelTargets.cmake")
+export(EXPORT kestrelPlotTargets NAMESPACE kestrel:: FILE "${CMAKE_BINARY_DIR}/kestrelPlotTargets.cmake")
+configure_file(cmake/KestrelPlugin.cmake "${CMAKE_BINARY_DIR}/KestrelPlugin.cmake" COPYONLY)
