@@ -11,8 +11,12 @@ all: build
 deps:
 	scripts/install-deps
 
+# Configures once; later builds re-run CMake by themselves when needed. A folder with no build
+# system (build.ninja or Makefile) never configured successfully, for instance before `make deps`:
+# its cache is dropped and CMake runs afresh, perhaps with another generator now that ninja exists.
 configure:
-	@if [ ! -f $(BUILD)/CMakeCache.txt ]; then \
+	@if [ ! -f $(BUILD)/build.ninja ] && [ ! -f $(BUILD)/Makefile ]; then \
+	  rm -rf $(BUILD)/CMakeCache.txt $(BUILD)/CMakeFiles; \
 	  cmake -S . -B $(BUILD) $(GENERATOR) -DCMAKE_BUILD_TYPE=Release; \
 	fi
 
