@@ -4,7 +4,7 @@ JOBS      ?= $(shell nproc)
 DEMO_OUT  ?= out/demo
 GENERATOR := $(shell command -v ninja >/dev/null 2>&1 && echo "-G Ninja")
 
-.PHONY: all deps configure build test demo bench soak format test-asan test-tsan clean
+.PHONY: all deps configure build test demo bench soak format package test-asan test-tsan clean
 
 all: build
 
@@ -40,6 +40,10 @@ bench: build
 # Ten minutes of a realtime graph, sampling RSS (see docs/benchmarks.md).
 soak: build
 	scripts/soak-rss out/soak 600
+
+# A Debian package of the Release build, $(BUILD)/kestrel_<version>-1_<arch>.deb, installing under /usr.
+package: build
+	cd $(BUILD) && cpack -G DEB
 
 format:
 	git ls-files '*.cpp' '*.hpp' '*.h' | xargs clang-format -i
