@@ -9,7 +9,7 @@ set_target_properties(kestrel kestrel_algorithms kestrel_tracking kestrel_plot P
 
 # Two export sets: kestrelTargets (the runtime, the messages, the algorithms and tracking
 # libraries) names no OpenCV, PCL or MRPT target; kestrel::plot draws with OpenCV, so it is the
-# optional component `plot` (find_package(kestrel COMPONENTS plot)) with its own file.
+# component `plot`, in kestrelPlotTargets.cmake (kestrelConfig.cmake loads both).
 install(TARGETS kestrel kestrel_messages kestrel_algorithms kestrel_tracking EXPORT kestrelTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
