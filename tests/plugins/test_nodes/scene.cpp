@@ -1,6 +1,8 @@
 // A scene whose answer is known, for the evaluators and the trajectory plot: one intruder on a
 // smooth path, its ground truth, detections and a track that sit at a fixed offset from it, and
 // nodes that hold messages back for a while (a slow chain under the realtime executor).
+#include "scene.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <kestrel/messages/detections.hpp>
@@ -21,7 +23,8 @@ class SceneSource final : public Node {
     return NodeSpec("scene_source", "One intruder with its ground truth, detections and a track at known offsets")
         .details(
             "Frame k is captured at k / rate_hz (its stamp, whatever the clock says when it is published). The "
-            "intruder is at position(k) in the camera frame; the detection and the track sit at position(k) + "
+            "intruder is at scene_position(k) in the camera frame; the detection and the track sit at "
+            "scene_position(k) + "
             "offset_m.")
         .output(kTruth, "ground truth of frame k")
         .output(kDetections, "one detection per frame, none every miss_every-th frame")
@@ -33,12 +36,6 @@ class SceneSource final : public Node {
                    .at_least(0)
                    .describe("frames k with k % miss_every == miss_every - 1 have no "
                              "detection; 0 = never"));
-  }
-
-  /// Where the intruder is in frame k: a curve with a different value in every frame.
-  static Eigen::Vector3d position(std::int64_t k) {
-    const double t = static_cast<double>(k);
-    return {1.25 * std::sin(0.3 * t) + 0.001 * t, 0.5 * std::cos(0.2 * t) - 0.123456789, 5.0 + 0.0625 * t};
   }
 
   explicit SceneSource(NodeInit& init)
@@ -53,7 +50,7 @@ class SceneSource final : public Node {
 
   void tick(Context& ctx) override {
     const Time stamp = from_seconds(static_cast<double>(next_) * period_s_);
-    const Eigen::Vector3d p = position(next_);
+    const Eigen::Vector3d p = scene_position(next_);
 
     msg::GroundTruth truth;
     truth.stamp = stamp;
@@ -62,7 +59,7 @@ class SceneSource final : public Node {
 
     msg::Detections detections;
     detections.stamp = stamp;
-    if (miss_every_ == 0 || next_ % miss_every_ != miss_every_ - 1)
+    if (scene_detects(next_, miss_every_))
       detections.items.push_back({p + offset_, Eigen::Vector3d::Constant(0.5), 50, 1.0});
     ctx.publish(kDetections, std::move(detections));
 
