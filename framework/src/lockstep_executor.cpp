@@ -72,6 +72,7 @@ Time LockstepExecutor::run(Progress& progress) {
       drain_inputs(*node);
       if (run_.failed) break;
     }
+    run_.announce_when_running();
     progress.update(now_);
   }
   drop_undelivered();

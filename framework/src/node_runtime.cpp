@@ -227,6 +227,14 @@ bool RunState::all_sources_ended() const {
   return true;
 }
 
+void RunState::announce_when_running() {
+  if (announced_) return;
+  for (const auto& node : nodes)
+    if (node->has_timer() && node->calls.load() == 0 && !node->source_ended) return;
+  announced_ = true;
+  if (options.on_running) options.on_running();
+}
+
 bool RunState::stopping() const {
   return stop_requested.load() || failed.load() || (options.stop_flag != nullptr && options.stop_flag->load());
 }

@@ -124,6 +124,7 @@ Time RealtimeExecutor::run(Progress& progress) {
 
   while (!run_.stopping() && !run_.all_sources_ended()) {
     if (duration && to_seconds(now()) >= *duration) break;
+    run_.announce_when_running();
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
     progress.update(now());
   }

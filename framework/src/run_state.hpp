@@ -140,12 +140,15 @@ class RunState {
   std::optional<double> duration_s() const;
   /// True once every node with a timer has called end_of_stream().
   bool all_sources_ended() const;
+  /// Calls options.on_running the first time every source has been called (or has ended).
+  void announce_when_running();
   /// True once the run should wind down: stop requested, failed, or an external stop flag.
   bool stopping() const;
   void node_error(NodeRuntime& node, const std::string& what);
   std::vector<std::string> errors() const;
 
  private:
+  bool announced_ = false;
   mutable std::mutex errors_mutex_;
   std::vector<std::string> errors_;
 };
