@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Runs scripts/paper-rsweep with very short runs and checks what it writes: one row per r value,
 # each with the outcome the paper reports for every r (MOTA above 0.999, one identity) and a
-# selected-track RMSE that is a real error below the goal's bound; the Markdown table beside the
-# paper's figures, and the plot.
+# selected-track RMSE that is a real error below the goal's bound and depends on r; the Markdown
+# table beside the paper's figures, and the plot.
 set -euo pipefail
 out=$1
 rm -rf "$out"
@@ -30,6 +30,10 @@ for row in rows:
     rmse = row["rmse_m"]
     if not (isinstance(rmse, (int, float)) and math.isfinite(rmse) and 0 < rmse <= bound):
         failures.append(f"r = {r}: RMSE {rmse} is not a finite error in (0, {bound:.3f}] m")
+# r is the filter's measurement noise: it shapes the gain, so the error cannot be the same at
+# every r (a tracker that ignored r, or its detections, would give one value throughout).
+if len({round(row["rmse_m"], 9) for row in rows if isinstance(row["rmse_m"], float)}) < 2:
+    failures.append("the RMSE is the same at every r: r has no effect")
 assert not failures, "\n".join(failures)
 md = open(os.path.join(out, "rsweep.md")).read()
 assert md.count("\n| ") == 1 + 10, "a header and one table row per r expected:\n" + md
