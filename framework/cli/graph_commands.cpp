@@ -77,6 +77,11 @@ int run_command(const RunArgs& args) {
   options.report_dir = args.report_dir;
   options.progress = args.progress;
   options.stop_flag = &g_stop;
+  // On stderr, so that what users parse on stdout does not change; scripts and tests wait for it.
+  options.on_running = [] {
+    std::fputs("[kestrel] running (SIGINT or SIGTERM stops the run cleanly)\n", stderr);
+    std::fflush(stderr);
+  };
   RunResult result;
   try {
     result = run_graph(*loaded.graph, loaded.plugins->registry(), options);

@@ -1,5 +1,6 @@
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "run_state.hpp"
 
@@ -85,6 +86,22 @@ void Context::request_stop() { rt_.run->stop_requested = true; }
 
 namespace detail {
 
+void Edge::count_delivery() {
+  ++delivered;
+  to->messages_in.fetch_add(1, std::memory_order_relaxed);
+}
+
+void Edge::push(const Envelope& envelope) {
+  queue.push_back(envelope);
+  high_water = std::max(high_water, queue.size());
+  count_delivery();
+}
+
+void Edge::drop_queued() {
+  dropped += queue.size();
+  queue.clear();
+}
+
 bool NodeRuntime::has_triggering_input() const {
   for (const auto& slot : inputs)
     if (slot.edge && slot.triggers()) return true;
@@ -120,6 +137,37 @@ bool NodeRuntime::call(Call what) {
     calls.fetch_add(1, std::memory_order_relaxed);
   }
   return ok;
+}
+
+int NodeRuntime::oldest_waiting_input() const {
+  int next = -1;
+  std::uint64_t oldest = std::numeric_limits<std::uint64_t>::max();
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    const Edge* e = inputs[i].edge;
+    if (e && inputs[i].triggers() && !e->queue.empty() && e->queue.front().sequence < oldest) {
+      oldest = e->queue.front().sequence;
+      next = static_cast<int>(i);
+    }
+  }
+  return next;
+}
+
+void NodeRuntime::take_message(int input) {
+  InputSlot& slot = inputs[static_cast<std::size_t>(input)];
+  slot.current = std::move(slot.edge->queue.front());
+  slot.edge->queue.pop_front();
+  current_trigger = input;
+}
+
+bool NodeRuntime::process_taken() {
+  const bool ok = call(Call::process);
+  current_trigger = -1;
+  return ok;
+}
+
+void NodeRuntime::run_tick() {
+  call(Call::tick);
+  ++ticks;
 }
 
 void NodeRuntime::publish(std::string_view output, std::shared_ptr<const void> payload, std::string_view type) {
@@ -191,6 +239,24 @@ bool RunState::instantiate() {
     }
   }
   return ok;
+}
+
+std::optional<double> RunState::duration_s() const {
+  return options.duration_s ? options.duration_s : graph.duration_s;
+}
+
+bool RunState::all_sources_ended() const {
+  for (const auto& node : nodes)
+    if (node->has_timer() && !node->source_ended) return false;
+  return true;
+}
+
+void RunState::announce_when_running() {
+  if (announced_) return;
+  for (const auto& node : nodes)
+    if (node->has_timer() && node->calls.load() == 0 && !node->source_ended) return;
+  announced_ = true;
+  if (options.on_running) options.on_running();
 }
 
 bool RunState::stopping() const {

@@ -38,8 +38,7 @@ class DetectionEvaluator final : public Node {
 
   explicit DetectionEvaluator(NodeInit& init) : DetectionEvaluator(scoring_params(init)) {}
   explicit DetectionEvaluator(const ScoringParams& p)
-      : scorer_(p.match_radius_m),
-        skip_(p.skip_first_s),
+      : scorer_(p.match_radius_m, p.skip_first_s),
         max_lag_(p.max_lag_s),
         lag_step_(p.lag_step_s),
         section_(p.section) {}
@@ -51,15 +50,14 @@ class DetectionEvaluator final : public Node {
       const auto detections = ctx.get(kDetections);
       pairing_.add(detections->stamp, detections, to_seconds(ctx.now()));
     }
-    pairing_.pair([this](const msg::Detections& d, const msg::GroundTruth& t, double arrival) {
-      if (to_seconds(t.stamp) >= skip_) score(d, t, arrival);
-    });
+    pairing_.pair(
+        [this](const msg::Detections& d, const msg::GroundTruth& t, double arrival) { score(d, t, arrival); });
   }
 
   void finish(Context& ctx) override {
-    if (pairing_.unpaired() > 0)
+    if (pairing_.unpaired_items() > 0)
       ctx.log().warn("{} detection message(s) had no ground truth with their capture time; not scored",
-                     pairing_.unpaired());
+                     pairing_.unpaired_items());
     const DetectionSummary s = scorer_.summary(max_lag_, lag_step_);
     nlohmann::json json = {
         {"frames", s.frames},
@@ -71,14 +69,17 @@ class DetectionEvaluator final : public Node {
         {"rmse_m", {{"x", s.rmse.x()}, {"y", s.rmse.y()}, {"z", s.rmse.z()}}},
         {"mean_error_m", {{"x", s.mean_error.x()}, {"y", s.mean_error.y()}, {"z", s.mean_error.z()}}},
         {"lag_s", s.lag_s ? nlohmann::json(*s.lag_s) : nlohmann::json(nullptr)}};
+    // Messages that found no partner, so were not scored: a lossy chain shows here.
+    json["unpaired"] = {{"messages", pairing_.unpaired_items()}, {"truths", pairing_.unpaired_truths()}};
     const std::string lag = s.lag_s ? fmt::format("{:.3f}", *s.lag_s) : "n/a";
     const std::string md = fmt::format(
         "| frames | precision | recall | TP | FP | FN | RMSE x [m] | RMSE y [m] | RMSE z [m] | lag [s] |\n"
         "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n"
         "| {} | {:.3f} | {:.3f} | {} | {} | {} | {:.3f} | {:.3f} | {:.3f} | {} |\n\n"
-        "Mean error (bias) of matched detections: x {:+.3f} m, y {:+.3f} m, z {:+.3f} m.\n",
+        "Mean error (bias) of matched detections: x {:+.3f} m, y {:+.3f} m, z {:+.3f} m. Not scored for want of a "
+        "partner: {} detection message(s) without ground truth, {} ground truth frame(s) without detections.\n",
         s.frames, s.precision, s.recall, s.tp, s.fp, s.fn, s.rmse.x(), s.rmse.y(), s.rmse.z(), lag, s.mean_error.x(),
-        s.mean_error.y(), s.mean_error.z());
+        s.mean_error.y(), s.mean_error.z(), pairing_.unpaired_items(), pairing_.unpaired_truths());
     ctx.set_report_section(section_, json, md);
     if (ctx.keeps_artifacts()) {
       ctx.add_artifact(section_ + ".csv", matches_csv(), "matched detections with their errors");
@@ -93,6 +94,7 @@ class DetectionEvaluator final : public Node {
     std::vector<TruthObject> objects;
     for (const auto& o : truth.objects) objects.push_back({o.id, o.position_camera, o.in_view});
     const FrameScore frame = scorer_.add_frame(to_seconds(truth.stamp), arrival_s, found, objects);
+    if (!frame.scored) return;  // before skip_first_s
     for (const auto& m : frame.matches)
       rows_.push_back(
           fmt::format("{:.4f},{:.4f},{},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f}", frame.capture_s, arrival_s,
@@ -114,7 +116,7 @@ class DetectionEvaluator final : public Node {
   }
 
   DetectionScorer scorer_;
-  double skip_, max_lag_, lag_step_;
+  double max_lag_, lag_step_;
   std::string section_;
   TruthPairing<msg::Detections> pairing_;
   std::vector<std::string> rows_;

@@ -9,6 +9,10 @@ FrameScore DetectionScorer::add_frame(double capture_s, double arrival_s,
                                       const std::vector<TruthObject>& truth) {
   FrameScore score;
   score.capture_s = capture_s;
+  if (capture_s < skip_) {
+    score.scored = false;
+    return score;
+  }
   Eigen::MatrixXd cost(static_cast<Eigen::Index>(detections.size()), static_cast<Eigen::Index>(truth.size()));
   for (std::size_t d = 0; d < detections.size(); ++d)
     for (std::size_t t = 0; t < truth.size(); ++t)

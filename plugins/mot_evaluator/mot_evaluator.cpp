@@ -38,7 +38,7 @@ class MotEvaluator final : public Node {
   }
 
   explicit MotEvaluator(NodeInit& init) : MotEvaluator(scoring_params(init)) {}
-  explicit MotEvaluator(const ScoringParams& p) : params_(p), scorer_(p.match_radius_m) {}
+  explicit MotEvaluator(const ScoringParams& p) : params_(p), scorer_(p.match_radius_m, p.skip_first_s) {}
 
   void process(Context& ctx) override {
     if (ctx.triggered_by(kTruth)) {
@@ -48,14 +48,14 @@ class MotEvaluator final : public Node {
       pairing_.add(tracks->stamp, tracks, to_seconds(ctx.now()));
     }
     pairing_.pair([this](const msg::Tracks& tracks, const msg::GroundTruth& truth, double arrival) {
-      if (to_seconds(truth.stamp) >= params_.skip_first_s) scorer_.add_frame(tracks, truth, arrival);
+      scorer_.add_frame(tracks, truth, arrival);
     });
   }
 
   void finish(Context& ctx) override {
-    if (pairing_.unpaired() > 0)
+    if (pairing_.unpaired_items() > 0)
       ctx.log().warn("{} track message(s) had no ground truth with their capture time; not scored",
-                     pairing_.unpaired());
+                     pairing_.unpaired_items());
     const TrackingSummary t = scorer_.summary(params_.max_lag_s, params_.lag_step_s);
     const algorithms::MotSummary& s = t.mot;
     // The CLEAR-MOT keys are named once, for this node and `kestrel mot` alike.
@@ -71,15 +71,20 @@ class MotEvaluator final : public Node {
                    {"off_target", t.target.off},
                    {"missing", t.target.missing},
                    {"switches", t.target.switches}}}});
+    // Messages that found no partner, so were not scored: a lossy chain shows here.
+    json["unpaired"] = {{"messages", pairing_.unpaired_items()}, {"truths", pairing_.unpaired_truths()}};
     const std::string md = fmt::format(
         "| frames | MOTA | MOTP [m] | IDF1 | IDSW | FP | FN | FRAG | MT/PT/ML | target RMSE [m] | lag [s] |\n"
         "|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|\n"
         "| {} | {:.4f} | {:.3f} | {:.3f} | {} | {} | {} | {} | {}/{}/{} | {:.3f} | {} |\n\n"
         "The selected target alone (what the aiming follows): target MOTA {:.4f}; on an intruder in {} of {} "
-        "frames, on nothing in {}, missing in {}, {} switch(es) between intruders.\n",
+        "frames, on nothing in {}, missing in {}, {} switch(es) between intruders. Not scored for want of a partner: "
+        "{} "
+        "track message(s) without ground truth, {} ground truth frame(s) without tracks.\n",
         s.frames, s.mota, s.motp, s.idf1, s.idsw, s.fp, s.fn, s.fragmentations, s.mostly_tracked, s.partially_tracked,
         s.mostly_lost, t.rmse, t.lag_s ? fmt::format("{:.3f}", *t.lag_s) : "n/a", t.target.mota(), t.target.on,
-        t.target.frames, t.target.off, t.target.missing, t.target.switches);
+        t.target.frames, t.target.off, t.target.missing, t.target.switches, pairing_.unpaired_items(),
+        pairing_.unpaired_truths());
     ctx.set_report_section(params_.section, json, md);
   }
 

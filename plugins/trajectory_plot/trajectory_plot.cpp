@@ -1,5 +1,7 @@
 // The `trajectory_plot` node: records ground truth, detections and tracks over a run and draws
 // them against time, one panel per axis, as PNG (plus the samples as CSV).
+#include <fmt/format.h>
+
 #include <cmath>
 #include <fstream>
 #include <kestrel/messages/detections.hpp>
@@ -110,7 +112,8 @@ class TrajectoryPlot final : public Node {
     out << "series,t,x,y,z\n";
     for (const auto& [label, s] : series_)
       for (std::size_t i = 0; i < s.t.size(); ++i)
-        out << label << ',' << s.t[i] << ',' << s.p[i].x() << ',' << s.p[i].y() << ',' << s.p[i].z() << '\n';
+        // Shortest text that reads back as the same double: the CSV holds exactly what was plotted.
+        out << fmt::format("{},{},{},{},{}\n", label, s.t[i], s.p[i].x(), s.p[i].y(), s.p[i].z());
     return out.str();
   }
 

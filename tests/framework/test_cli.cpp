@@ -70,6 +70,20 @@ std::string read(const fs::path& f) {
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
+// Waits until the process's output holds `line` (true), or the process has exited or the time is
+// up (false). The process is not reaped: wait_exit() still gets its status.
+bool wait_for_line(const Process& p, const std::string& line, std::chrono::seconds timeout) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  while (std::chrono::steady_clock::now() < deadline) {
+    if (read(p.output).find(line) != std::string::npos) return true;
+    siginfo_t info{};
+    if (waitid(P_PID, static_cast<id_t>(p.pid), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid != 0)
+      return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return false;
+}
+
 int run_cli(const std::vector<std::string>& args, std::string* output = nullptr) {
   const fs::path out = temp_dir("out") / "output.txt";
   const int code = wait_exit(start(args, out));
@@ -111,14 +125,6 @@ bool catches(pid_t pid, int sig) {
   return false;
 }
 
-// The number of threads of the process: a realtime run has one per node once it is under way.
-int threads_of(pid_t pid) {
-  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
-  for (std::string line; std::getline(status, line);)
-    if (line.rfind("Threads:", 0) == 0) return std::stoi(line.substr(8));
-  return 0;
-}
-
 // Waits up to `seconds` for the process to exit; kills it if it does not (returns -1 then).
 int wait_exit_within(const Process& p, double seconds) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
@@ -142,11 +148,12 @@ TEST_P(CleanShutdown, SignalDrainsFlushesAndExitsZero) {
   const fs::path dir = temp_dir("signal" + std::to_string(GetParam()));
   const fs::path graph = write_graph(dir, kRealtimeForever);
   Process p = start({"run", graph.string(), "--report", (dir / "report").string(), "--stats"}, dir / "output.txt");
-  // Under way (its nodes' threads started), with its handler in place: on a loaded machine
-  // starting can take seconds.
-  for (int i = 0; i < 600 && !(catches(p.pid, GetParam()) && threads_of(p.pid) > 1); ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  std::this_thread::sleep_for(std::chrono::milliseconds(1000));
+  // The run says when it is under way: every source has ticked at least once.
+  if (!wait_for_line(p, "[kestrel] running", std::chrono::seconds(60))) {
+    kill(p.pid, SIGKILL);
+    wait_exit(p);
+    FAIL() << "the run never said it was running:\n" << read(p.output);
+  }
   ASSERT_EQ(kill(p.pid, GetParam()), 0);
   EXPECT_EQ(wait_exit(p), 0) << read(p.output);
   const auto report = nlohmann::json::parse(read(dir / "report" / "report.json"));
@@ -155,7 +162,7 @@ TEST_P(CleanShutdown, SignalDrainsFlushesAndExitsZero) {
   std::uint64_t sent = 0;
   for (const auto& n : report.at("stats").at("nodes"))
     if (n.at("id") == "src") sent = n.at("messages_out");
-  EXPECT_GT(sent, 0u);  // the run was under way (how far depends on the machine's load)
+  EXPECT_GT(sent, 0u);  // the source had ticked before the signal
   EXPECT_EQ(report.at("sink").at("count"), sent);
   EXPECT_THAT(read(p.output), HasSubstr("src.out -> slow.in"));  // --stats printed
   EXPECT_TRUE(fs::exists(dir / "report" / "report.md"));

@@ -66,3 +66,30 @@ TEST(DetectionScorer, EmptyRunIsPerfectByConvention) {
   EXPECT_DOUBLE_EQ(s.recall, 1.0);
   EXPECT_FALSE(s.lag_s);
 }
+
+TEST(DetectionScorer, FramesCapturedBeforeSkipFirstAreNotScored) {
+  DetectionScorer scorer(1.0, /*skip_first_s=*/0.5);
+  const std::vector<TruthObject> one = {{1, {0, 0, 5}, true}};
+  // Before 0.5 s: a false alarm, a miss and a large error, none of which may count.
+  for (const double t : {0.0, 0.25, 0.4999}) {
+    const auto f = scorer.add_frame(t, t, {{0.9, 0, 5}, {3, 0, 5}}, t < 0.3 ? one : std::vector<TruthObject>{});
+    EXPECT_FALSE(f.scored) << t;
+    EXPECT_EQ(f.tp + f.fp + f.fn, 0) << t;
+    EXPECT_TRUE(f.matches.empty()) << t;
+  }
+  scorer.add_frame(0.3, 0.3, {}, one);  // a miss, also too early
+  // From 0.5 s on (inclusive): scored.
+  const auto at = scorer.add_frame(0.5, 0.5, {{0.1, 0, 5}}, one);
+  EXPECT_TRUE(at.scored);
+  EXPECT_EQ(at.tp, 1);
+  scorer.add_frame(0.6, 0.6, {{0, 0.2, 5}}, one);
+  scorer.add_frame(0.7, 0.7, {{0, 0, 5.3}}, one);
+  const auto s = scorer.summary();
+  EXPECT_EQ(s.frames, 3u);
+  EXPECT_EQ(s.tp, 3u);
+  EXPECT_EQ(s.fp, 0u);
+  EXPECT_EQ(s.fn, 0u);
+  EXPECT_NEAR(s.rmse.x(), std::sqrt(0.01 / 3), 1e-12);
+  EXPECT_NEAR(s.rmse.y(), std::sqrt(0.04 / 3), 1e-12);
+  EXPECT_NEAR(s.rmse.z(), std::sqrt(0.09 / 3), 1e-12);
+}
