@@ -26,6 +26,7 @@ void flatten(const nlohmann::json& value, const std::string& prefix,
 void write_file(const std::filesystem::path& path, const std::string& text) {
   std::ofstream out(path);
   out << text;
+  out.close();  // a full disk shows only when the buffer is flushed
   if (!out) throw Error("cannot write " + path.string());
 }
 
