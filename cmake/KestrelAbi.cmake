@@ -9,6 +9,19 @@
 #   cmake -DOUTPUT=inc/kestrel/version.hpp -DVERSION=0.1.0 -DINCLUDE_DIRS=inc -P KestrelAbi.cmake
 set(_KESTREL_ABI_DIR "${CMAKE_CURRENT_LIST_DIR}")
 
+# kestrel_abi_version(OUT version): the version policy in one place. From 1.0 on, releases with
+# the same major version are compatible (ABI version = SONAME = MAJOR). Before 1.0 every minor
+# release may break, so the ABI version is 0.MINOR: the SONAME, the CMake package's compatibility
+# rule and the plugin handshake all follow it.
+function(kestrel_abi_version out version)
+  string(REGEX MATCH "^([0-9]+)\\.([0-9]+)" _ "${version}")
+  if(CMAKE_MATCH_1 EQUAL 0)
+    set(${out} "0.${CMAKE_MATCH_2}" PARENT_SCOPE)
+  else()
+    set(${out} "${CMAKE_MATCH_1}" PARENT_SCOPE)
+  endif()
+endfunction()
+
 function(kestrel_write_version_header)
   cmake_parse_arguments(ARG "" "OUTPUT;VERSION;TEMPLATE" "INCLUDE_DIRS" ${ARGN})
   if(NOT ARG_OUTPUT OR NOT ARG_INCLUDE_DIRS)
@@ -22,6 +35,7 @@ function(kestrel_write_version_header)
   set(PROJECT_VERSION_MAJOR "${CMAKE_MATCH_1}")
   set(PROJECT_VERSION_MINOR "${CMAKE_MATCH_2}")
   set(PROJECT_VERSION_PATCH "${CMAKE_MATCH_3}")
+  kestrel_abi_version(KESTREL_ABI_VERSION "${ARG_VERSION}")
   if(NOT ARG_TEMPLATE)
     set(ARG_TEMPLATE "${_KESTREL_ABI_DIR}/../framework/include/kestrel/version.hpp.in")
   endif()

@@ -32,7 +32,7 @@ install(EXPORT kestrelTargets NAMESPACE kestrel:: DESTINATION "${KESTREL_INSTALL
 install(EXPORT kestrelPlotTargets NAMESPACE kestrel:: DESTINATION "${KESTREL_INSTALL_CMAKEDIR}")
 configure_package_config_file(cmake/kestrelConfig.cmake.in "${CMAKE_BINARY_DIR}/kestrelConfig.cmake"
                               INSTALL_DESTINATION "${KESTREL_INSTALL_CMAKEDIR}")
-write_basic_package_version_file("${CMAKE_BINARY_DIR}/kestrelConfigVersion.cmake" COMPATIBILITY SameMajorVersion)
+write_basic_package_version_file("${CMAKE_BINARY_DIR}/kestrelConfigVersion.cmake" COMPATIBILITY ${KESTREL_PACKAGE_COMPATIBILITY})
 install(FILES "${CMAKE_BINARY_DIR}/kestrelConfig.cmake" "${CMAKE_BINARY_DIR}/kestrelConfigVersion.cmake"
               cmake/KestrelPlugin.cmake
         DESTINATION "${KESTREL_INSTALL_CMAKEDIR}")

@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
+#include "kestrel/abi.hpp"
 #include "kestrel/version.hpp"
 
 int main(int argc, char** argv) {
@@ -11,7 +12,8 @@ int main(int argc, char** argv) {
   CLI::App app{
       "kestrel: perception-and-control dataflow runtime.\n"
       "Exit codes: 0 ok, 1 run failed, 2 bad command line, 3 invalid graph, 4 not found / plugin refused."};
-  app.set_version_flag("--version", std::string("kestrel ") + KESTREL_VERSION_STRING);
+  app.set_version_flag("--version", std::string("kestrel ") + KESTREL_VERSION_STRING + " (commit " + KESTREL_GIT_HASH +
+                                        ")\nABI " + KESTREL_ABI_VERSION + ", plugin tag " + KESTREL_ABI_TAG);
   app.require_subcommand(1);
   std::string log_level = "info";
   app.add_option("--log-level", log_level, "debug, info, warn or error")
