@@ -77,6 +77,9 @@ void Context::set_report_section(const std::string& key, nlohmann::json value, s
 void Context::describe_metric(const std::string& path, std::string unit, bool higher_is_better, bool by_magnitude) {
   rt_.run->report.describe_metric(rt_.id(), path, MetricMeta{std::move(unit), higher_is_better, by_magnitude});
 }
+void Context::describe_quantity(const std::string& path, std::string unit) {
+  rt_.run->report.describe_metric(rt_.id(), path, MetricMeta{std::move(unit), std::nullopt, false});
+}
 bool Context::keeps_artifacts() const { return rt_.run->report.keeps_artifacts(); }
 void Context::add_artifact(const std::string& file_name, std::string_view bytes, std::string caption) {
   rt_.run->report.add_artifact(rt_.id(), file_name, bytes, std::move(caption));

@@ -16,6 +16,8 @@ void flatten(const nlohmann::json& value, const std::string& prefix,
     for (const auto& [k, v] : value.items()) flatten(v, prefix.empty() ? k : prefix + "." + k, rows);
   } else if (value.is_number_float()) {
     rows.emplace_back(prefix, fmt::format("{:.4g}", value.get<double>()));
+  } else if (value.is_null()) {
+    rows.emplace_back(prefix, "undefined");  // a metric with nothing to measure (no matches, no frames)
   } else if (value.is_string()) {
     rows.emplace_back(prefix, value.get<std::string>());
   } else {

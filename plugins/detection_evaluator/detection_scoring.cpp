@@ -56,11 +56,11 @@ DetectionSummary DetectionScorer::summary(double max_lag_s, double lag_step_s) c
   s.tp = tp_;
   s.fp = fp_;
   s.fn = fn_;
-  s.precision = tp_ + fp_ ? static_cast<double>(tp_) / static_cast<double>(tp_ + fp_) : 1.0;
-  s.recall = tp_ + fn_ ? static_cast<double>(tp_) / static_cast<double>(tp_ + fn_) : 1.0;
+  if (tp_ + fp_ > 0) s.precision = static_cast<double>(tp_) / static_cast<double>(tp_ + fp_);
+  if (tp_ + fn_ > 0) s.recall = static_cast<double>(tp_) / static_cast<double>(tp_ + fn_);
   if (tp_ > 0) {
-    s.rmse = (sum_sq_ / static_cast<double>(tp_)).cwiseSqrt();
-    s.mean_error = sum_ / static_cast<double>(tp_);
+    s.rmse = Eigen::Vector3d((sum_sq_ / static_cast<double>(tp_)).cwiseSqrt());
+    s.mean_error = Eigen::Vector3d(sum_ / static_cast<double>(tp_));
   }
   s.lag_s = algorithms::estimate_lag(truth_curve_, measured_curve_, max_lag_s, lag_step_s);
   return s;

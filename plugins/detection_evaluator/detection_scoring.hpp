@@ -33,10 +33,12 @@ struct FrameScore {
 struct DetectionSummary {
   std::uint64_t frames = 0;
   std::uint64_t tp = 0, fp = 0, fn = 0;
-  double precision = 0.0;  ///< TP / (TP + FP); 1 when nothing was detected
-  double recall = 0.0;     ///< TP / (TP + FN); 1 when nothing was there to find
-  Eigen::Vector3d rmse = Eigen::Vector3d::Zero();
-  Eigen::Vector3d mean_error = Eigen::Vector3d::Zero();  ///< bias of matched detections
+  // Each is undefined (empty) when there is nothing to measure it on, rather than a flattering
+  // convention: no detections, nothing to find, no matches, curves too short to correlate.
+  std::optional<double> precision;            ///< TP / (TP + FP); undefined without detections
+  std::optional<double> recall;               ///< TP / (TP + FN); undefined with nothing to find
+  std::optional<Eigen::Vector3d> rmse;        ///< per camera axis, over matches; undefined without
+  std::optional<Eigen::Vector3d> mean_error;  ///< bias of matched detections; undefined without
   std::optional<double> lag_s;
 };
 

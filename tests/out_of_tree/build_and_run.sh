@@ -36,4 +36,13 @@ unset LD_LIBRARY_PATH
 "$kestrel" run "$example/hello.yaml" --report "$work/report" --no-progress
 grep -q '"outcome": "completed"' "$work/report/report.json"
 grep -q '"detections_seen": 10' "$work/report/report.json" || { cat "$work/report/report.json"; exit 1; }
+grep -q '"hello.detections_seen"' "$work/report/report.json" || { echo "no metrics_meta entry"; exit 1; }
+[ "$(wc -l < "$work/report/detections.csv")" -eq 11 ] || { echo "detections.csv is not header + 10 rows"; exit 1; }
+# The example's rule, broken from the command line: refused as an invalid graph (exit 3).
+set +e
+"$kestrel" validate "$example/hello.yaml" --set greeter.end_m=-1 > "$work/validate.log" 2>&1
+rc=$?
+set -e
+[ "$rc" -eq 3 ] && grep -q "break the rule 'start_m < end_m'" "$work/validate.log" \
+  || { echo "validate exited $rc:"; cat "$work/validate.log"; exit 1; }
 echo "out-of-tree plugin built against the $mode package, loaded and run"

@@ -130,6 +130,9 @@ class Context {
   /// Says how to read a metric of this node's sections: `path` is its dotted key in report.json
   /// ("detection.recall"). sweep, ab and plot compare runs with it.
   void describe_metric(const std::string& path, std::string unit, bool higher_is_better, bool by_magnitude = false);
+  /// Says a metric has a unit but no better direction (a count of frames or of objects): report.json
+  /// gives its unit and no "higher_is_better", and sweep and ab give it no verdict.
+  void describe_quantity(const std::string& path, std::string unit = {});
   /// True when the run keeps a report folder, so that artifacts are worth preparing.
   bool keeps_artifacts() const;
   /// Adds a file to the run report (a PNG is shown in report.md): the runtime writes it, checks
