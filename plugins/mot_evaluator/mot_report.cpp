@@ -1,5 +1,7 @@
 #include "mot_report.hpp"
 
+#include <kestrel/algorithms/mot_metrics.hpp>
+
 namespace kestrel::evaluation {
 
 namespace {
@@ -41,11 +43,15 @@ ReportSection tracking_report(const TrackingSummary& t) {
                            {"off_target", t.target.off},
                            {"missing", t.target.missing},
                            {"switches", t.target.switches}}}});
-  for (const auto& [key, m] : algorithms::mot_summary_meta("").items())
-    section.metrics[key] = MetricMeta{m["unit"].get<std::string>(),
-                                      m.contains("higher_is_better") ? std::optional<bool>(m["higher_is_better"].get<bool>())
-                                                                     : std::nullopt,
-                                      false};
+  const nlohmann::json clear_mot_meta = algorithms::mot_summary_meta("");
+  for (auto it = clear_mot_meta.begin(); it != clear_mot_meta.end(); ++it) {
+    kestrel::MetricMeta meta;
+    meta.unit = it.value()["unit"].get<std::string>();
+    meta.higher_is_better = it.value().contains("higher_is_better")
+                                ? std::optional<bool>(it.value()["higher_is_better"].get<bool>())
+                                : std::nullopt;
+    section.metrics[it.key()] = meta;
+  }
   section.metrics.insert({{"rmse_m", {"m", false, false}},
                           {"rmse_axes_m", {"m", false, false}},
                           {"selected_frames", {"", true, false}},
