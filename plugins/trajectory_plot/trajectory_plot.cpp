@@ -1,6 +1,7 @@
 // The `trajectory_plot` node: records ground truth, detections and tracks over a run and draws
 // them against time, one panel per axis, as PNG (plus the samples as CSV), into the run report.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cmath>
 #include <kestrel/messages/detections.hpp>
@@ -135,14 +136,16 @@ class TrajectoryPlot final : public Node {
   void report_counts(Context& ctx) const {
     nlohmann::json series = nlohmann::json::object();
     std::uint64_t kept = 0;
+    std::vector<std::string> cut;  // report.md names the series that lost samples
     for (const auto& [label, s] : series_) {
       series[label] = {{"samples", s.t.size()}, {"dropped_samples", s.dropped}};
       kept += s.t.size();
+      if (s.dropped > 0) cut.push_back(fmt::format("{} ({})", label, s.dropped));
     }
     const std::uint64_t dropped = dropped_total();
     std::string md = fmt::format("{} samples plotted as {}.png", kept, cfg_.name);
-    md += dropped > 0 ? fmt::format("; {} later samples dropped beyond max_samples = {} per series.\n", dropped,
-                                    cfg_.max_samples)
+    md += dropped > 0 ? fmt::format("; {} later samples dropped beyond max_samples = {} per series: {}.\n", dropped,
+                                    cfg_.max_samples, fmt::join(cut, ", "))
                       : ", none dropped.\n";
     ctx.set_report_section(ctx.id(), {{"samples", kept}, {"dropped_samples", dropped}, {"series", series}}, md);
     ctx.describe_quantity(ctx.id() + ".samples");

@@ -105,7 +105,7 @@ TEST(DetectionScorer, FramesCapturedBeforeSkipFirstAreNotScored) {
   EXPECT_EQ(s.tp, 3u);
   EXPECT_EQ(s.fp, 0u);
   EXPECT_EQ(s.fn, 0u);
-  EXPECT_NEAR(s.rmse.x(), std::sqrt(0.01 / 3), 1e-12);
-  EXPECT_NEAR(s.rmse.y(), std::sqrt(0.04 / 3), 1e-12);
-  EXPECT_NEAR(s.rmse.z(), std::sqrt(0.09 / 3), 1e-12);
+  EXPECT_NEAR(s.rmse->x(), std::sqrt(0.01 / 3), 1e-12);
+  EXPECT_NEAR(s.rmse->y(), std::sqrt(0.04 / 3), 1e-12);
+  EXPECT_NEAR(s.rmse->z(), std::sqrt(0.09 / 3), 1e-12);
 }

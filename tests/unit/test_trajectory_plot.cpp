@@ -1,5 +1,6 @@
-// The trajectory_plot node on the test plugin's known scene: the CSV holds exactly the samples
-// fed in, series by series, and the PNG has one 1000 x 300 panel per axis.
+// The trajectory_plot node. On the test plugin's known scene the CSV holds exactly the samples fed
+// in, series by series, and the PNG has one 1000 x 300 panel per axis. Its files go into the
+// report, and samples beyond max_samples are counted in the report rather than lost without a word.
 #include <gmock/gmock.h>
 
 #include <filesystem>
@@ -65,8 +66,7 @@ std::filesystem::path run_plot(const std::string& name, int count, int max_sampl
   - {id: scene, type: scene_source, params: {rate_hz: 30, count: )" +
                            std::to_string(count) + R"(, offset_m: [0.1, -0.2, 0.3], miss_every: 4}}
   - {id: plot, type: trajectory_plot, params: {name: )" +
-                           name + ", output_dir: \"" + dir.string() +
-                           "\", max_samples: " + std::to_string(max_samples) +
+                           name + ", max_samples: " + std::to_string(max_samples) +
                            R"(}}
 connections:
   - {from: scene.truth, to: plot.truth}
@@ -76,9 +76,40 @@ connections:
   auto built = build_graph(GraphSource::from_string(yaml, "g.yaml"), plugins().registry());
   EXPECT_TRUE(built.graph) << built.diagnostics.str();
   if (!built.graph) return dir;
-  const auto r = run_graph(*built.graph, plugins().registry());
+  RunOptions options;
+  options.report_dir = dir;
+  const auto r = run_graph(*built.graph, plugins().registry(), options);
   EXPECT_EQ(r.outcome, RunOutcome::completed) << (r.errors.empty() ? "" : r.errors.front());
   return dir;
+}
+
+RunResult run(const std::string& yaml, const std::filesystem::path& report_dir) {
+  auto built = build_graph(GraphSource::from_string(yaml), plugins().registry());
+  EXPECT_TRUE(built.graph) << built.diagnostics.str();
+  if (!built.graph) return {};
+  std::filesystem::remove_all(report_dir);
+  RunOptions options;
+  options.report_dir = report_dir;
+  return run_graph(*built.graph, plugins().registry(), options);
+}
+
+int lines(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  int n = 0;
+  for (std::string line; std::getline(in, line);) ++n;
+  return n;
+}
+
+// 2 s of truth at 30 Hz: 60 samples of one series.
+std::string intruder_graph(const std::string& plot_params) {
+  return R"(nodes:
+  - {id: intruder, type: intruder, params: {rate_hz: 30}}
+  - {id: plot, type: trajectory_plot, params: )" +
+         plot_params + R"(}
+connections:
+  - {from: intruder.truth, to: plot.truth}
+duration: 2.0
+)";
 }
 
 // What the scene fed in: series in name order, samples in time order.
@@ -120,4 +151,47 @@ TEST(TrajectoryPlot, KeepsAtMostMaxSamplesPerSeries) {
   const auto dir = run_plot("bounded", 24, 5);
   std::string header;
   EXPECT_THAT(read_csv(dir / "bounded.csv", header), ::testing::ElementsAreArray(expected_rows(24, 5)));
+}
+
+TEST(TrajectoryPlot, SamplesBeyondTheLimitAreCountedInTheReport) {
+  const auto dir = std::filesystem::temp_directory_path() / "kestrel-plot-dropped";
+  const RunResult r = run(intruder_graph("{name: cut, max_samples: 50}"), dir);
+  ASSERT_EQ(r.outcome, RunOutcome::completed);
+  const auto& section = r.report.at("plot");
+  EXPECT_EQ(section.at("samples"), 50);
+  EXPECT_EQ(section.at("dropped_samples"), 10);
+  std::ifstream md(dir / "report.md");
+  const std::string text{std::istreambuf_iterator<char>(md), std::istreambuf_iterator<char>()};
+  EXPECT_THAT(text, ::testing::HasSubstr("10 later samples dropped beyond max_samples = 50 per series: truth 1 (10)"));
+  EXPECT_EQ(r.report.at("metrics_meta").at("plot.dropped_samples").at("higher_is_better"), false);
+  EXPECT_FALSE(r.report.at("metrics_meta").at("plot.samples").contains("higher_is_better"));  // a count
+  EXPECT_EQ(lines(dir / "cut.csv"), 51);                                                      // header + the 50 kept
+  EXPECT_TRUE(std::filesystem::exists(dir / "cut.png"));
+  // The files are listed in the report, with the loss in their caption.
+  bool listed = false;
+  for (const auto& a : r.report.at("artifacts"))
+    if (a.at("file") == "cut.png") {
+      listed = true;
+      EXPECT_THAT(a.at("caption").get<std::string>(), ::testing::HasSubstr("10 later samples dropped"));
+    }
+  EXPECT_TRUE(listed);
+}
+
+TEST(TrajectoryPlot, NothingDroppedUnderTheLimit) {
+  const auto dir = std::filesystem::temp_directory_path() / "kestrel-plot-kept";
+  const RunResult r = run(intruder_graph("{}"), dir);
+  ASSERT_EQ(r.outcome, RunOutcome::completed);
+  EXPECT_EQ(r.report.at("plot").at("samples"), 60);
+  EXPECT_EQ(r.report.at("plot").at("dropped_samples"), 0);
+  EXPECT_EQ(lines(dir / "trajectory.csv"), 61);
+}
+
+TEST(TrajectoryPlot, TheOldOutputFolderIsIgnoredAndNothingIsWrittenThere) {
+  const auto dir = std::filesystem::temp_directory_path() / "kestrel-plot-report";
+  const auto old = std::filesystem::temp_directory_path() / "kestrel-plot-old-folder";
+  std::filesystem::remove_all(old);
+  const RunResult r = run(intruder_graph("{output_dir: " + old.string() + "}"), dir);
+  ASSERT_EQ(r.outcome, RunOutcome::completed);
+  EXPECT_TRUE(std::filesystem::exists(dir / "trajectory.png"));
+  EXPECT_FALSE(std::filesystem::exists(old));
 }
