@@ -4,15 +4,19 @@ JOBS      ?= $(shell nproc)
 DEMO_OUT  ?= out/demo
 GENERATOR := $(shell command -v ninja >/dev/null 2>&1 && echo "-G Ninja")
 
-.PHONY: all deps configure build test demo bench soak format test-asan test-tsan clean
+.PHONY: all deps configure build test demo bench soak format package test-asan test-tsan clean
 
 all: build
 
 deps:
 	scripts/install-deps
 
+# Configures once; later builds re-run CMake by themselves when needed. A folder with no build
+# system (build.ninja or Makefile) never configured successfully, for instance before `make deps`:
+# its cache is dropped and CMake runs afresh, perhaps with another generator now that ninja exists.
 configure:
-	@if [ ! -f $(BUILD)/CMakeCache.txt ]; then \
+	@if [ ! -f $(BUILD)/build.ninja ] && [ ! -f $(BUILD)/Makefile ]; then \
+	  rm -rf $(BUILD)/CMakeCache.txt $(BUILD)/CMakeFiles; \
 	  cmake -S . -B $(BUILD) $(GENERATOR) -DCMAKE_BUILD_TYPE=Release; \
 	fi
 
@@ -36,6 +40,10 @@ bench: build
 # Ten minutes of a realtime graph, sampling RSS (see docs/benchmarks.md).
 soak: build
 	scripts/soak-rss out/soak 600
+
+# A Debian package of the Release build, $(BUILD)/kestrel_<version>-1_<arch>.deb, installing under /usr.
+package: build
+	cd $(BUILD) && cpack -G DEB
 
 format:
 	git ls-files '*.cpp' '*.hpp' '*.h' | xargs clang-format -i

@@ -33,7 +33,9 @@ function(kestrel_add_plugin name)
     set_target_properties(${target} PROPERTIES LIBRARY_OUTPUT_DIRECTORY "${KESTREL_PLUGIN_OUTPUT_DIRECTORY}")
   endif()
   if(KESTREL_IN_TREE AND NOT ARG_NO_INSTALL)
-    install(TARGETS ${target} LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}/kestrel/plugins")
+    # Installed plugins reach kestrel's libraries relative to their own folder (KestrelLayout.cmake).
+    set_target_properties(${target} PROPERTIES INSTALL_RPATH "${KESTREL_PLUGIN_RPATH}")
+    install(TARGETS ${target} LIBRARY DESTINATION "${KESTREL_INSTALL_PLUGINDIR}")
   endif()
 endfunction()
 

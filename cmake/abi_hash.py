@@ -5,12 +5,15 @@ Comments and layout are not tokens, so a comment or whitespace edit leaves the h
 while any change a compiler sees (a new field, a renamed type, another default) changes it.
 Preprocessor directives keep their line ends, which are part of their meaning.
 
-Usage: abi_hash.py ROOT [ROOT...]   (every *.hpp and *.h below each ROOT, by relative path)
+Usage: abi_hash.py ROOT [ROOT...]   (every *.hpp and *.h below each ROOT, by relative path,
+                                     except the generated kestrel/version.hpp)
 """
 import hashlib
 import pathlib
 import re
 import sys
+
+GENERATED = str(pathlib.PurePath("kestrel", "version.hpp"))
 
 TOKEN = re.compile(
     r"""
@@ -60,6 +63,9 @@ def main(roots):
     for root in roots:
         base = pathlib.Path(root)
         files += [(str(p.relative_to(base)), p) for p in base.rglob("*") if p.suffix in (".hpp", ".h") and p.is_file()]
+    # kestrel/version.hpp is generated from this hash: in an installed tree it sits among the
+    # headers, and it is not part of what it describes.
+    files = [(rel, p) for rel, p in files if rel != GENERATED]
     for rel, path in sorted(files):
         digest.update(rel.encode() + b"\0")
         digest.update("\0".join(tokens(path.read_text(encoding="utf-8"))).encode() + b"\0")

@@ -3,7 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <limits>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -204,8 +207,15 @@ std::string render_png(const std::vector<Panel>& panels, int width, int panel_he
 }
 
 void save_png(const std::filesystem::path& file, const std::vector<Panel>& panels, int width, int panel_height) {
-  if (!cv::imwrite(file.string(), render(panels, width, panel_height)))
-    throw Error("cannot write plot " + file.string());
+  // Encoded in memory, then written with every step checked: imwrite picks the format by the
+  // name's extension and reports neither a full disk nor a failed close.
+  const std::string png = render_png(panels, width, panel_height);
+  std::FILE* out = std::fopen(file.c_str(), "wb");
+  if (!out) throw Error("cannot write plot " + file.string() + ": " + std::strerror(errno));
+  const bool written = std::fwrite(png.data(), 1, png.size(), out) == png.size();
+  const int saved_errno = errno;
+  if (std::fclose(out) != 0 || !written)
+    throw Error("cannot write plot " + file.string() + ": " + std::strerror(written ? errno : saved_errno));
 }
 
 }  // namespace kestrel::plot

@@ -1,5 +1,6 @@
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "run_state.hpp"
 
@@ -10,12 +11,12 @@ void Node::tick(Context&) {}
 void Node::finish(Context&) {}
 
 void NodeInit::set_rate(double hz) {
-  if (!(hz > 0.0) || !std::isfinite(hz)) throw Error("node '" + id_ + "': a timer rate must be positive");
+  if (!(hz > 0.0) || !std::isfinite(hz)) throw Error("node '" + id() + "': a timer rate must be positive");
   tick_interval_ns_ = 1e9 / hz;
 }
 
 void NodeInit::set_period(Duration period) {
-  if (period <= Duration::zero()) throw Error("node '" + id_ + "': a timer period must be positive");
+  if (period <= Duration::zero()) throw Error("node '" + id() + "': a timer period must be positive");
   tick_interval_ns_ = static_cast<double>(period.count());
 }
 
@@ -76,6 +77,9 @@ void Context::set_report_section(const std::string& key, nlohmann::json value, s
 void Context::describe_metric(const std::string& path, std::string unit, bool higher_is_better, bool by_magnitude) {
   rt_.run->report.describe_metric(rt_.id(), path, MetricMeta{std::move(unit), higher_is_better, by_magnitude});
 }
+void Context::describe_quantity(const std::string& path, std::string unit) {
+  rt_.run->report.describe_metric(rt_.id(), path, MetricMeta{std::move(unit), std::nullopt, false});
+}
 bool Context::keeps_artifacts() const { return rt_.run->report.keeps_artifacts(); }
 void Context::add_artifact(const std::string& file_name, std::string_view bytes, std::string caption) {
   rt_.run->report.add_artifact(rt_.id(), file_name, bytes, std::move(caption));
@@ -84,6 +88,22 @@ void Context::end_of_stream() { rt_.source_ended = true; }
 void Context::request_stop() { rt_.run->stop_requested = true; }
 
 namespace detail {
+
+void Edge::count_delivery() {
+  ++delivered;
+  to->messages_in.fetch_add(1, std::memory_order_relaxed);
+}
+
+void Edge::push(const Envelope& envelope) {
+  queue.push_back(envelope);
+  high_water = std::max(high_water, queue.size());
+  count_delivery();
+}
+
+void Edge::drop_queued() {
+  dropped += queue.size();
+  queue.clear();
+}
 
 bool NodeRuntime::has_triggering_input() const {
   for (const auto& slot : inputs)
@@ -120,6 +140,37 @@ bool NodeRuntime::call(Call what) {
     calls.fetch_add(1, std::memory_order_relaxed);
   }
   return ok;
+}
+
+int NodeRuntime::oldest_waiting_input() const {
+  int next = -1;
+  std::uint64_t oldest = std::numeric_limits<std::uint64_t>::max();
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    const Edge* e = inputs[i].edge;
+    if (e && inputs[i].triggers() && !e->queue.empty() && e->queue.front().sequence < oldest) {
+      oldest = e->queue.front().sequence;
+      next = static_cast<int>(i);
+    }
+  }
+  return next;
+}
+
+void NodeRuntime::take_message(int input) {
+  InputSlot& slot = inputs[static_cast<std::size_t>(input)];
+  slot.current = std::move(slot.edge->queue.front());
+  slot.edge->queue.pop_front();
+  current_trigger = input;
+}
+
+bool NodeRuntime::process_taken() {
+  const bool ok = call(Call::process);
+  current_trigger = -1;
+  return ok;
+}
+
+void NodeRuntime::run_tick() {
+  call(Call::tick);
+  ++ticks;
 }
 
 void NodeRuntime::publish(std::string_view output, std::shared_ptr<const void> payload, std::string_view type) {
@@ -191,6 +242,24 @@ bool RunState::instantiate() {
     }
   }
   return ok;
+}
+
+std::optional<double> RunState::duration_s() const {
+  return options.duration_s ? options.duration_s : graph.duration_s;
+}
+
+bool RunState::all_sources_ended() const {
+  for (const auto& node : nodes)
+    if (node->has_timer() && !node->source_ended) return false;
+  return true;
+}
+
+void RunState::announce_when_running() {
+  if (announced_) return;
+  for (const auto& node : nodes)
+    if (node->has_timer() && node->calls.load() == 0 && !node->source_ended) return;
+  announced_ = true;
+  if (options.on_running) options.on_running();
 }
 
 bool RunState::stopping() const {

@@ -165,12 +165,14 @@ std::optional<Params> ParamChecker::check(const YAML::Node& params, const ParamS
       }
     }
   }
-  // A component that keeps its default but has its parameters overridden: start from its name.
-  for (const auto& [head, _] : nested)
-    if (!given.count(head)) {
-      const auto& first = nested[head].begin()->second;
-      given[head] = {YAML::Node(std::get<ComponentConfig>(*find_spec(head)->default_value).type), first.where, true};
-    }
+  // A component left at its default is read as if its name had been given, so that its own
+  // parameters get their defaults (and any overrides) and are checked.
+  for (const auto& spec : specs) {
+    if (spec.type != ParamType::component || given.count(spec.name) || !spec.default_value) continue;
+    const auto sub = nested.find(spec.name);
+    given[spec.name] = {YAML::Node(std::get<ComponentConfig>(*spec.default_value).type),
+                        sub == nested.end() ? owner_where : sub->second.begin()->second.where, sub != nested.end()};
+  }
 
   Params result;
   for (const auto& spec : specs) {

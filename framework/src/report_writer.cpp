@@ -16,6 +16,8 @@ void flatten(const nlohmann::json& value, const std::string& prefix,
     for (const auto& [k, v] : value.items()) flatten(v, prefix.empty() ? k : prefix + "." + k, rows);
   } else if (value.is_number_float()) {
     rows.emplace_back(prefix, fmt::format("{:.4g}", value.get<double>()));
+  } else if (value.is_null()) {
+    rows.emplace_back(prefix, "undefined");  // a metric with nothing to measure (no matches, no frames)
   } else if (value.is_string()) {
     rows.emplace_back(prefix, value.get<std::string>());
   } else {
@@ -26,6 +28,7 @@ void flatten(const nlohmann::json& value, const std::string& prefix,
 void write_file(const std::filesystem::path& path, const std::string& text) {
   std::ofstream out(path);
   out << text;
+  out.close();  // a full disk shows only when the buffer is flushed
   if (!out) throw Error("cannot write " + path.string());
 }
 

@@ -139,7 +139,8 @@ RunResult run_graph(const GraphConfig& graph, const Registry& registry, const Ru
                    {"stats", stats_json(result)}};
   nlohmann::json metrics_meta = nlohmann::json::object();
   for (const auto& [path, meta] : run.report.metrics()) {
-    nlohmann::json m = {{"unit", meta.unit}, {"higher_is_better", meta.higher_is_better}};
+    nlohmann::json m = {{"unit", meta.unit}};
+    if (meta.higher_is_better) m["higher_is_better"] = *meta.higher_is_better;
     if (meta.by_magnitude) m["by_magnitude"] = true;
     metrics_meta[path] = std::move(m);
   }

@@ -2,6 +2,7 @@
 // targets whose path is known.
 #include <gmock/gmock.h>
 
+#include <cmath>
 #include <random>
 
 #include "kestrel/tracking/constant_acceleration.hpp"
@@ -39,12 +40,15 @@ double tracking_error(const ParticleOptions& o) {
 
 }  // namespace
 
-// Detections carry 0.1 m of noise per axis (0.17 m in norm); the filter must stay on the path.
+// Detections carry 0.1 m of Gaussian noise per axis: their mean error is 0.1 sqrt(8 / pi) =
+// 0.16 m. A filter on the path averages that noise down, so its mean error is smaller.
+const double kDetectionMeanError = 0.1 * std::sqrt(8.0 / M_PI);
+
 TEST(ParticleTrackFilter, FollowsAManoeuvringTarget) {
-  EXPECT_LT(tracking_error(ParticleOptions{}), 0.25);  // the node's defaults
+  EXPECT_LT(tracking_error(ParticleOptions{}), kDetectionMeanError);  // the node's defaults
   ParticleOptions narrow;
   narrow.p = 0.01;  // a prior closer to a hovering drone's
-  EXPECT_LT(tracking_error(narrow), 0.15);
+  EXPECT_LT(tracking_error(narrow), kDetectionMeanError);
 }
 
 TEST(ParticleTrackFilter, EveryResamplingMethodWorks) {
@@ -53,7 +57,7 @@ TEST(ParticleTrackFilter, EveryResamplingMethodWorks) {
     ParticleOptions o;
     o.p = 0.01;
     o.resampling = method;
-    EXPECT_LT(tracking_error(o), 0.15) << method;
+    EXPECT_LT(tracking_error(o), kDetectionMeanError) << method;
   }
 }
 
@@ -125,7 +129,8 @@ TEST(ParticleTrackFilter, ProgressiveCorrectionKeepsASharpDetectionFromCollapsin
   int plain_lost = 0;
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
     plain_lost += against_kalman(plain, seed).first > 1.0;
-    EXPECT_LT(against_kalman(staged, seed).first, 0.2) << "seed " << seed;
+    const auto [pf, kf] = against_kalman(staged, seed);
+    EXPECT_LT(pf, 1.2 * kf) << "seed " << seed;  // as close to the optimal filter as with a broad r
   }
   EXPECT_GE(plain_lost, 1);  // the plain update lost the target (metres off) in some runs
 }

@@ -34,31 +34,41 @@ std::shared_ptr<void> make_component(const Registry& registry, const std::string
 std::uint64_t derive_seed(std::uint64_t seed, std::string_view name);
 }  // namespace detail
 
-class ComponentInit {
+/// What the constructors of nodes and components both get: a name, the validated parameters
+/// (also as the config struct the spec binds them to), a seed of their own, a logger, and the
+/// means to build the components they are composed of.
+class InitBase {
  public:
-  ComponentInit(std::string name, const ParamSet& spec, const Params& params, const Registry& registry,
-                std::uint64_t seed, Logger& log)
+  InitBase(std::string name, const ParamSet& spec, const Params& params, const Registry& registry, std::uint64_t seed,
+           Logger& log)
       : name_(std::move(name)), spec_(spec), params_(params), registry_(registry), seed_(seed), log_(log) {}
 
-  /// Where the component sits: "<node id>.<parameter>", e.g. "tracker.associator".
-  const std::string& name() const { return name_; }
   const Params& params() const { return params_; }
-  /// The parameters as the config struct the component's spec binds them to.
+  /// The parameters as the config struct that the spec binds them to (see ConfigSpec).
   template <class Config>
   Config config() const {
-    return detail::config_from<Config>(spec_, params_, "component '" + name_ + "'");
+    return detail::config_from<Config>(spec_, params_, "'" + name_ + "'");
   }
-  /// A seed of the component's own, derived from the node's seed: runs reproduce, and two
-  /// components never share a random stream.
+  /// One parameter that is not bound to a config struct (declared with spec's param()).
+  template <class T>
+  T param(const std::string& name) const {
+    return params_.get<T>(name);
+  }
+  /// A seed derived from the run's seed and this node's id (for a component: from its node's seed
+  /// and its parameter's name): stable across runs, distinct between nodes and components.
   std::uint64_t seed() const { return seed_; }
   Logger& log() const { return log_; }
 
-  /// Builds a component this one is composed of, from its own component parameter.
+  /// Builds the component named by component parameter `param_name`. Interface must declare
+  /// `static constexpr std::string_view kKind` matching the parameter's kind.
   template <class Interface>
   std::shared_ptr<Interface> make_component(const std::string& param_name) const {
     return std::static_pointer_cast<Interface>(
         detail::make_component(registry_, name_, spec_, params_, param_name, Interface::kKind, seed_, log_));
   }
+
+ protected:
+  const std::string& name() const { return name_; }
 
  private:
   std::string name_;
@@ -67,6 +77,13 @@ class ComponentInit {
   const Registry& registry_;
   std::uint64_t seed_;
   Logger& log_;
+};
+
+class ComponentInit : public InitBase {
+ public:
+  using InitBase::InitBase;
+  /// Where the component sits: "<node id>.<parameter>", e.g. "tracker.associator".
+  const std::string& name() const { return InitBase::name(); }
 };
 
 }  // namespace kestrel

@@ -65,33 +65,14 @@ class Node {
 
 /// What a node's constructor gets: its identity, its validated parameters, and the means to
 /// build its components and to ask for a timer.
-class NodeInit {
+class NodeInit : public InitBase {
  public:
   NodeInit(std::string id, const NodeSpec& spec, const Params& params, const Registry& registry, std::uint64_t seed,
            Logger& log)
-      : id_(std::move(id)), spec_(spec), params_(params), registry_(registry), seed_(seed), log_(log) {}
+      : InitBase(id, spec.param_set(), params, registry, seed, log), spec_(spec) {}
 
-  const std::string& id() const { return id_; }
+  const std::string& id() const { return name(); }
   const NodeSpec& spec() const { return spec_; }
-  const Params& params() const { return params_; }
-  /// The parameters as the config struct that spec() binds them to (see ConfigSpec).
-  template <class Config>
-  Config config() const {
-    return detail::config_from<Config>(spec_.param_set(), params_, "node '" + id_ + "'");
-  }
-  /// One parameter that is not bound to a config struct (declared with NodeSpec::param).
-  template <class T>
-  T param(const std::string& name) const {
-    return params_.get<T>(name);
-  }
-
-  /// Builds the component named by component parameter `param_name`. Interface must declare
-  /// `static constexpr std::string_view kKind` matching the parameter's kind.
-  template <class Interface>
-  std::shared_ptr<Interface> make_component(const std::string& param_name) const {
-    return std::static_pointer_cast<Interface>(
-        detail::make_component(registry_, id_, spec_.param_set(), params_, param_name, Interface::kKind, seed_, log_));
-  }
 
   /// Asks for tick() `hz` times a second, from time zero. Sources use this. Tick k falls at
   /// round(k / hz) on the run clock, so 30 Hz gives exactly 600 ticks in 20 s.
@@ -101,18 +82,8 @@ class NodeInit {
   /// Nanoseconds between ticks; 0 if the node has no timer.
   double tick_interval_ns() const { return tick_interval_ns_; }
 
-  /// A seed derived from the run's seed and this node's id: stable across runs and distinct
-  /// between nodes.
-  std::uint64_t seed() const { return seed_; }
-  Logger& log() const { return log_; }
-
  private:
-  std::string id_;
   const NodeSpec& spec_;
-  const Params& params_;
-  const Registry& registry_;
-  std::uint64_t seed_;
-  Logger& log_;
   double tick_interval_ns_ = 0.0;
 };
 
@@ -159,6 +130,9 @@ class Context {
   /// Says how to read a metric of this node's sections: `path` is its dotted key in report.json
   /// ("detection.recall"). sweep, ab and plot compare runs with it.
   void describe_metric(const std::string& path, std::string unit, bool higher_is_better, bool by_magnitude = false);
+  /// Says a metric has a unit but no better direction (a count of frames or of objects): report.json
+  /// gives its unit and no "higher_is_better", and sweep and ab give it no verdict.
+  void describe_quantity(const std::string& path, std::string unit = {});
   /// True when the run keeps a report folder, so that artifacts are worth preparing.
   bool keeps_artifacts() const;
   /// Adds a file to the run report (a PNG is shown in report.md): the runtime writes it, checks

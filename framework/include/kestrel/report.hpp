@@ -6,17 +6,19 @@
 #include <map>
 #include <mutex>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace kestrel {
 
-/// How to read one metric: its unit, and which way is better. `by_magnitude`: smaller |value| is
-/// better whatever the sign (a lag, a bias).
+/// How to read one metric: its unit, and which way is better (none for a count that is neither
+/// good nor bad, such as the number of frames scored). `by_magnitude`: smaller |value| is better
+/// whatever the sign (a lag, a bias).
 struct MetricMeta {
   std::string unit;
-  bool higher_is_better = true;
+  std::optional<bool> higher_is_better = true;
   bool by_magnitude = false;
 };
 
