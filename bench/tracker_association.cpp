@@ -1,33 +1,18 @@
-// Tracker plus association time per frame for N targets with N detections: the Kalman tracker
-// with the Hungarian and greedy associators, and the particle tracker.
+// Tracker plus association time per frame for N targets with N detections: the tracker with the
+// Kalman filter and the Hungarian and greedy associators, and with the particle filter.
 #include <benchmark/benchmark.h>
 
 #include <random>
 
 #include "associators.hpp"
-#include "kestrel/tracking/constant_acceleration.hpp"
+#include "kestrel/tracking/kalman_filter.hpp"
 #include "kestrel/tracking/track_manager.hpp"
-#include "particle_track_filter.hpp"
+#include "particle_filter.hpp"
 
 namespace {
 
 using namespace kestrel;
 using namespace kestrel::tracking;
-
-class KalmanFilter final : public TrackFilter {
- public:
-  explicit KalmanFilter(const Eigen::Vector3d& z) : kf_(ConstantAccelerationKalman::start(z, 1.0)) {}
-  void predict(double dt) override { kf_.predict(dt, 1.0); }
-  void update(const Eigen::Vector3d& z) override { kf_.update(z, 1.0); }
-  PredictedMeasurement predicted_measurement() const override {
-    return {kf_.position(), kf_.innovation_covariance(1.0)};
-  }
-  Eigen::VectorXd state() const override { return kf_.x; }
-  Eigen::MatrixXd covariance() const override { return kf_.P; }
-
- private:
-  ConstantAccelerationKalman kf_;
-};
 
 // N targets on a 2 m grid, each circling slowly; detections carry 5 cm of noise.
 std::vector<Eigen::Vector3d> detections(int n, int frame, std::mt19937_64& rng) {
@@ -43,9 +28,12 @@ std::vector<Eigen::Vector3d> detections(int n, int frame, std::mt19937_64& rng) 
 }
 
 template <class A>
-void run(benchmark::State& state, FilterFactory factory) {
+void run(benchmark::State& state, std::shared_ptr<Filter> filter) {
   const int n = static_cast<int>(state.range(0));
-  TrackManager manager(std::make_shared<A>(Metric::euclidean, 1.0), std::move(factory), TrackManagerOptions{});
+  TrackManager manager(TrackerParts{std::move(filter), std::make_shared<A>(Metric::euclidean, 1.0),
+                                    std::make_shared<ConsecutiveHitsInitiator>(ConsecutiveHitsConfig{}),
+                                    std::make_shared<ConsecutiveMissesDeleter>(ConsecutiveMissesConfig{}),
+                                    std::make_shared<LongestLivingSelector>()});
   std::mt19937_64 rng(1);
   int frame = 0;
   for (; frame < 30; ++frame) manager.step(from_seconds(frame / 30.0), detections(n, frame, rng));  // tracks exist
@@ -61,16 +49,12 @@ void run(benchmark::State& state, FilterFactory factory) {
   state.counters["tracks"] = static_cast<double>(manager.size());
 }
 
-FilterFactory kalman() {
-  return [](const Eigen::Vector3d& z) { return std::make_unique<KalmanFilter>(z); };
-}
+std::shared_ptr<Filter> kalman() { return std::make_shared<KalmanFilter>(KalmanConfig{}); }
 
 void BM_KalmanHungarian(benchmark::State& state) { run<HungarianAssociator>(state, kalman()); }
 void BM_KalmanGreedy(benchmark::State& state) { run<GreedyAssociator>(state, kalman()); }
 void BM_ParticleHungarian(benchmark::State& state) {
-  run<HungarianAssociator>(state, [seed = std::uint64_t{1}](const Eigen::Vector3d& z) mutable {
-    return std::make_unique<ParticleTrackFilter>(z, ParticleOptions{}, ++seed);
-  });
+  run<HungarianAssociator>(state, std::make_shared<ParticleFilter>(ParticleOptions{}, 1));
 }
 
 BENCHMARK(BM_KalmanHungarian)->Arg(1)->Arg(10)->Arg(100)->Unit(benchmark::kMicrosecond);

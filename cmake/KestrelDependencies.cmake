@@ -1,21 +1,33 @@
 # The Debian 12 packages the framework and the in-tree plugins build against.
 # scripts/install-deps installs them.
-find_package(Threads REQUIRED)
-find_package(Eigen3 3.4 REQUIRED NO_MODULE)
-find_package(yaml-cpp 0.7 REQUIRED)
-find_package(fmt REQUIRED)
-find_package(spdlog REQUIRED)
-find_package(nlohmann_json 3 REQUIRED)
-find_package(CLI11 REQUIRED)
-find_package(OpenCV 4 REQUIRED COMPONENTS core imgproc imgcodecs calib3d)
-find_package(PCL 1.13 REQUIRED COMPONENTS common filters segmentation search kdtree)
-# PCL 1.13 makes imported targets (pcl_common, pcl_filters, ...) for the components above.
-find_package(mrpt-bayes REQUIRED)
-find_package(mrpt-opengl REQUIRED)
+
+# find_package, but a missing package stops the configure with its Debian package's name and the
+# command that installs it, instead of CMake's generic search report.
+macro(kestrel_require package debian)
+  find_package(${package} ${ARGN} QUIET)
+  if(NOT ${package}_FOUND)
+    message(FATAL_ERROR "kestrel needs ${package} (Debian package ${debian}), which was not found. "
+                        "Run `make deps` (scripts/install-deps) to install every dependency, then build again.")
+  endif()
+endmacro()
+
+kestrel_require(Threads libc6-dev)
+kestrel_require(Eigen3 libeigen3-dev 3.4 NO_MODULE)
+kestrel_require(yaml-cpp libyaml-cpp-dev 0.7)
+kestrel_require(fmt libfmt-dev)
+kestrel_require(spdlog libspdlog-dev)
+kestrel_require(nlohmann_json nlohmann-json3-dev 3)
+kestrel_require(CLI11 libcli11-dev)
+# Header-only: Boost.Math's Student's t distribution for the CLI's confidence intervals.
+kestrel_require(Boost libboost-dev 1.74)
+kestrel_require(OpenCV libopencv-dev 4 COMPONENTS core imgproc imgcodecs calib3d)
+# PCL 1.13 makes imported targets (pcl_common, pcl_filters, ...) for these components.
+kestrel_require(PCL libpcl-dev 1.13 COMPONENTS common filters segmentation search kdtree)
+kestrel_require(mrpt-bayes libmrpt-bayes-dev)
+kestrel_require(mrpt-opengl libmrpt-opengl-dev)
 if(KESTREL_BUILD_TESTS)
-  find_package(GTest REQUIRED)
+  kestrel_require(GTest googletest)
 endif()
 if(KESTREL_BUILD_BENCH)
-  find_package(benchmark REQUIRED)
+  kestrel_require(benchmark libbenchmark-dev)
 endif()
-

@@ -2,10 +2,11 @@
 // Runs many `kestrel run` jobs as child processes, a few at a time, and reads back their
 // report.json files. Shared by `kestrel sweep` and `kestrel ab`.
 #include <filesystem>
-#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
+
+#include "command_errors.hpp"
 
 namespace kestrel::cli {
 
@@ -16,17 +17,23 @@ struct BatchJob {
 
 struct BatchResult {
   int exit_code = 0;
-  nlohmann::json report;  ///< empty if the run wrote none
+  nlohmann::json report;  ///< null if the run wrote none
+};
+
+/// SIGINT or SIGTERM stopped the batch; its code is 128 + the signal, as a shell reports it.
+class Interrupted : public CommandError {
+ public:
+  Interrupted(int signal, const std::string& message)
+      : CommandError(static_cast<ExitCode>(128 + signal), message), signal_(signal) {}
+  int signal() const { return signal_; }
+
+ private:
+  int signal_;
 };
 
 /// Runs the jobs with at most `parallel` at once; each job's output goes to report_dir/run.log.
+/// On SIGINT or SIGTERM it starts no more runs, stops the running ones (each drains and writes
+/// its report; a second signal, or 20 s, kills them), waits for them and throws Interrupted.
 std::vector<BatchResult> run_batch(const std::vector<BatchJob>& jobs, int parallel);
-
-/// The numeric metrics of a report's evaluator sections, as "section.key" (nested keys joined
-/// with dots); the runtime's own keys (stats, graph, ...) are left out.
-std::map<std::string, double> report_metrics(const nlohmann::json& report);
-
-/// +1 if a larger value of this metric is better, -1 if smaller is better, 0 if unknown.
-int better_direction(const std::string& metric);
 
 }  // namespace kestrel::cli

@@ -42,6 +42,7 @@ struct PlotArgs {
   std::string x;
   std::vector<std::string> y;
   std::string output;
+  std::string meta;  // a JSON file with metrics_meta; default: metrics_meta.json beside the CSV
 };
 
 struct SweepArgs {

@@ -6,13 +6,13 @@
 #include <atomic>
 #include <csignal>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 
+#include "command_errors.hpp"
 #include "commands.hpp"
-#include "kestrel/runtime/graph.hpp"
-#include "kestrel/runtime/plugin_host.hpp"
+#include "graph_loading.hpp"
 #include "kestrel/runtime/run.hpp"
+#include "output_files.hpp"
 
 namespace kestrel::cli {
 
@@ -34,31 +34,10 @@ void install_signal_handlers() {
   sigaction(SIGTERM, &action, nullptr);
 }
 
-struct LoadedGraph {
-  std::unique_ptr<PluginHost> plugins;
-  std::optional<GraphConfig> graph;
-};
-
-// Reads the graph, loads the plugins it may need, validates. Prints every problem.
-LoadedGraph load(const GraphArgs& args) {
-  LoadedGraph loaded;
-  const GraphSource source = GraphSource::from_file(args.graph);
-  loaded.plugins = std::make_unique<PluginHost>();
-  loaded.plugins->load_search_path(source.plugin_paths());
-  for (const auto& e : loaded.plugins->errors()) spdlog::warn("{}", e.message);
-  BuildResult result = build_graph(source, loaded.plugins->registry(), args.overrides);
-  std::fputs(result.diagnostics.str().c_str(), stderr);
-  if (result.diagnostics.has_errors())
-    std::fprintf(stderr, "%s: %zu error(s); the graph was not run\n", args.graph.c_str(),
-                 result.diagnostics.error_count());
-  loaded.graph = std::move(result.graph);
-  return loaded;
-}
-
 }  // namespace
 
 int validate_command(const GraphArgs& args) {
-  auto loaded = load(args);
+  auto loaded = load_graph(args);
   if (!loaded.graph) return kInvalidGraph;
   std::printf("%s: valid (%zu nodes, %zu connections)\n", args.graph.c_str(), loaded.graph->nodes.size(),
               loaded.graph->connections.size());
@@ -66,24 +45,24 @@ int validate_command(const GraphArgs& args) {
 }
 
 int dot_command(const GraphArgs& args, const std::string& output) {
-  auto loaded = load(args);
+  auto loaded = load_graph(args);
   if (!loaded.graph) return kInvalidGraph;
   const std::string dot = to_dot(*loaded.graph);
   if (output.empty()) {
     std::fputs(dot.c_str(), stdout);
     return kOk;
   }
-  std::ofstream out(output);
-  out << dot;
-  if (!out) {
-    spdlog::error("cannot write {}", output);
-    return kUsage;
-  }
-  return kOk;
+  return run_command_body("dot", [&] {
+    write_file(output, dot);
+    return kOk;
+  });
 }
 
 int run_command(const RunArgs& args) {
-  auto loaded = load(args);
+  // Before the graph loads (seconds, on a busy machine): a run stopped that early still ends
+  // cleanly, with its report, instead of dying of the signal.
+  install_signal_handlers();
+  auto loaded = load_graph(args);
   if (!loaded.graph) return kInvalidGraph;
   if (args.executor == "realtime") {
     loaded.graph->executor = ExecutorKind::realtime;
@@ -92,13 +71,17 @@ int run_command(const RunArgs& args) {
     loaded.graph->executor = ExecutorKind::lockstep;
     loaded.graph->clock = ClockKind::simulated;
   }
-  install_signal_handlers();
   RunOptions options;
   options.duration_s = args.duration_s;
   options.seed = args.seed;
   options.report_dir = args.report_dir;
   options.progress = args.progress;
   options.stop_flag = &g_stop;
+  // On stderr, so that what users parse on stdout does not change; scripts and tests wait for it.
+  options.on_running = [] {
+    std::fputs("[kestrel] running (SIGINT or SIGTERM stops the run cleanly)\n", stderr);
+    std::fflush(stderr);
+  };
   RunResult result;
   try {
     result = run_graph(*loaded.graph, loaded.plugins->registry(), options);

@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
+#include "kestrel/abi.hpp"
 #include "kestrel/version.hpp"
 
 int main(int argc, char** argv) {
@@ -11,7 +12,8 @@ int main(int argc, char** argv) {
   CLI::App app{
       "kestrel: perception-and-control dataflow runtime.\n"
       "Exit codes: 0 ok, 1 run failed, 2 bad command line, 3 invalid graph, 4 not found / plugin refused."};
-  app.set_version_flag("--version", std::string("kestrel ") + KESTREL_VERSION_STRING);
+  app.set_version_flag("--version", std::string("kestrel ") + KESTREL_VERSION_STRING + " (commit " + KESTREL_GIT_HASH +
+                                        ")\nABI " + KESTREL_ABI_VERSION + ", plugin tag " + KESTREL_ABI_TAG);
   app.require_subcommand(1);
   std::string log_level = "info";
   app.add_option("--log-level", log_level, "debug, info, warn or error")
@@ -57,11 +59,17 @@ int main(int argc, char** argv) {
   mot_cmd->add_option("--json", mot.json, "also write the metrics to this JSON file");
 
   PlotArgs plot;
-  auto* plot_cmd = app.add_subcommand("plot", "Plot columns of a CSV file as PNG (one panel per y entry; a+b overlays)");
+  auto* plot_cmd =
+      app.add_subcommand("plot", "Plot columns of a CSV file as PNG (one panel per y entry; a+b overlays)");
   plot_cmd->add_option("csv", plot.csv, "CSV file with a header row")->required();
   plot_cmd->add_option("--x", plot.x, "column for the x axis")->required();
-  plot_cmd->add_option("--y", plot.y, "columns to plot, one panel each; a+b overlays a and b in one panel")->required()->delimiter(',');
+  plot_cmd->add_option("--y", plot.y, "columns to plot, one panel each; a+b overlays a and b in one panel")
+      ->required()
+      ->delimiter(',');
   plot_cmd->add_option("-o,--output", plot.output, "PNG file to write")->required();
+  plot_cmd->add_option("--meta", plot.meta,
+                       "units and directions from this JSON's metrics_meta (a report.json); default: "
+                       "metrics_meta.json beside the CSV, as kestrel sweep writes it");
 
   SweepArgs sweep;
   auto* sweep_cmd = app.add_subcommand("sweep", "Run a graph over a grid of parameter values and seeds, in parallel");

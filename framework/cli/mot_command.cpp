@@ -9,10 +9,13 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "command_errors.hpp"
 #include "commands.hpp"
 #include "kestrel/algorithms/clear_mot.hpp"
+#include "kestrel/algorithms/mot_metrics.hpp"
 #include "kestrel/error.hpp"
 #include "mot_files.hpp"
+#include "output_files.hpp"
 
 namespace kestrel::cli {
 
@@ -29,7 +32,7 @@ double iou(const MotRow& a, const MotRow& b) {
 }  // namespace
 
 int mot_command(const MotArgs& args) {
-  try {
+  return run_command_body("mot", [&] {
     if (args.iou && args.distance) throw Error("give --iou or --dist, not both");
     const bool by_iou = !args.distance;
     const double iou_threshold = args.iou.value_or(0.5);
@@ -73,28 +76,26 @@ int mot_command(const MotArgs& args) {
                 static_cast<unsigned long long>(s.fragmentations), static_cast<unsigned long long>(s.objects));
     std::printf("MOTP is the mean %s of matches.\n", by_iou ? "1 - IoU" : "distance");
     if (!args.json.empty()) {
-      const nlohmann::json j = {{"frames", s.frames},
-                                {"mota", s.mota},
-                                {"motp", s.motp},
-                                {"idf1", s.idf1},
-                                {"idp", s.idp},
-                                {"idr", s.idr},
-                                {"fp", s.fp},
-                                {"fn", s.fn},
-                                {"idsw", s.idsw},
-                                {"mt", s.mostly_tracked},
-                                {"pt", s.partially_tracked},
-                                {"ml", s.mostly_lost},
-                                {"frag", s.fragmentations},
-                                {"num_objects", s.objects},
-                                {"matches", s.matches}};
-      std::ofstream(args.json) << j.dump(2) << '\n';
+      // The mot_evaluator's keys (kestrel/algorithms/mot_metrics.hpp), so that files and runs
+      // compare key by key. MOTP is in metres only when points are matched by distance.
+      nlohmann::json j = algorithms::mot_summary_json(s);
+      nlohmann::json meta = algorithms::mot_summary_meta("");
+      if (by_iou) {
+        j.erase("motp_m");
+        meta.erase("motp_m");
+      }
+      j["motp"] = s.motp;  // the matching's own measure: 1 - IoU, or metres
+      meta["motp"] = {{"unit", by_iou ? "" : "m"}, {"higher_is_better", false}};
+      // The names this command used before, kept for a release (CHANGELOG.md).
+      j["mt"] = s.mostly_tracked;
+      j["pt"] = s.partially_tracked;
+      j["ml"] = s.mostly_lost;
+      j["frag"] = s.fragmentations;
+      j["metrics_meta"] = meta;
+      write_file(args.json, j.dump(2) + "\n");
     }
     return kOk;
-  } catch (const Error& e) {
-    std::fprintf(stderr, "kestrel mot: %s\n", e.what());
-    return kUsage;
-  }
+  });
 }
 
 }  // namespace kestrel::cli

@@ -37,10 +37,13 @@ std::string describe_param(const ParamSpec& p) {
   return line;
 }
 
-void print_params(const std::vector<ParamSpec>& params) {
+void print_params(const ParamSet& set) {
   std::printf("\nParameters:\n");
-  if (params.empty()) std::printf("    none\n");
-  for (const auto& p : params) std::fputs(describe_param(p).c_str(), stdout);
+  if (set.params.empty()) std::printf("    none\n");
+  for (const auto& p : set.params) std::fputs(describe_param(p).c_str(), stdout);
+  if (set.rules.empty()) return;
+  std::printf("\nRules:\n");
+  for (const auto& r : set.rules) std::printf("    %s\n", r.text.c_str());
 }
 
 void inspect_node(const NodeType& type, const Registry& registry) {
@@ -51,14 +54,14 @@ void inspect_node(const NodeType& type, const Registry& registry) {
   std::printf("\nInputs:\n");
   if (spec.inputs().empty()) std::printf("    none (a source)\n");
   for (const auto& p : spec.inputs())
-    std::printf("    %-22s %-26s %s%s\n      %s\n", p.name.c_str(), p.type.c_str(),
+    std::printf("    %-22s %-26s %s%s\n      %s\n", p.name.c_str(), p.type().c_str(),
                 p.trigger == Trigger::on_message ? "triggers" : "latest value", p.optional ? ", optional" : "",
                 p.description.c_str());
   std::printf("\nOutputs:\n");
   if (spec.outputs().empty()) std::printf("    none (a sink)\n");
   for (const auto& p : spec.outputs())
-    std::printf("    %-22s %-26s\n      %s\n", p.name.c_str(), p.type.c_str(), p.description.c_str());
-  print_params(spec.params());
+    std::printf("    %-22s %-26s\n      %s\n", p.name.c_str(), p.type().c_str(), p.description.c_str());
+  print_params(spec.param_set());
   for (const auto& p : spec.params()) {
     if (p.type != ParamType::component) continue;
     std::printf("\n  '%s' accepts these %s components: %s\n", p.name.c_str(), p.component_kind.c_str(),
@@ -82,10 +85,6 @@ int plugins_command() {
     for (const auto& m : plugin.messages)
       std::printf("    message    %-24s %s\n", m.c_str(), registry.find_message(m)->info.description.c_str());
   }
-  std::printf("framework message types:\n");
-  for (const auto& [name, m] : registry.messages())
-    if (m.plugin.empty() && name != "*")
-      std::printf("    message    %-24s %s\n", name.c_str(), m.info.description.c_str());
   if (host->plugins().empty()) {
     std::string path;
     for (const auto& dir : PluginHost::search_path()) {
@@ -113,7 +112,7 @@ int inspect_command(const std::string& name) {
     std::printf("Component %s/%s\n  %s\n  plugin: %s\n", c.kind.c_str(), c.spec.name().c_str(),
                 c.spec.summary().c_str(), c.plugin.c_str());
     if (!c.spec.details().empty()) std::printf("\n%s\n", c.spec.details().c_str());
-    print_params(c.spec.params());
+    print_params(c.spec.param_set());
     return kOk;
   }
   if (matches.size() > 1) {
@@ -122,9 +121,13 @@ int inspect_command(const std::string& name) {
     std::fprintf(stderr, "\n");
     return kNotFound;
   }
-  if (const MessageTypeEntry* m = registry.find_message(name)) {
-    std::printf("Message type %s\n  %s\n  from: %s\n", name.c_str(), m->info.description.c_str(),
-                m->plugin.empty() ? "(framework)" : m->plugin.c_str());
+  // A message type by its full name (kestrel.Detections) or by its last part (Detections).
+  const MessageTypeEntry* message = registry.find_message(name);
+  for (const auto& [full, m] : registry.messages())
+    if (!message && full.size() > name.size() && full.ends_with("." + name)) message = &m;
+  if (message) {
+    std::printf("Message type %s\n  %s\n  first registered by: %s\n", message->info.name.c_str(),
+                message->info.description.c_str(), message->plugin.empty() ? "(framework)" : message->plugin.c_str());
     return kOk;
   }
   std::vector<std::string> names = registry.node_type_names();

@@ -3,7 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <limits>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -187,12 +190,32 @@ std::vector<double> nice_ticks(double lo, double hi, int target_count) {
   return ticks;
 }
 
-void save_png(const std::filesystem::path& file, const std::vector<Panel>& panels, int width, int panel_height) {
+namespace {
+cv::Mat render(const std::vector<Panel>& panels, int width, int panel_height) {
   const int count = std::max<int>(1, static_cast<int>(panels.size()));
   cv::Mat img(panel_height * count, width, CV_8UC3, cv::Scalar(255, 255, 255));
   for (int i = 0; i < static_cast<int>(panels.size()); ++i)
     draw_panel(img, panels[static_cast<std::size_t>(i)], cv::Rect(0, i * panel_height, width, panel_height));
-  if (!cv::imwrite(file.string(), img)) throw Error("cannot write plot " + file.string());
+  return img;
+}
+}  // namespace
+
+std::string render_png(const std::vector<Panel>& panels, int width, int panel_height) {
+  std::vector<unsigned char> bytes;
+  if (!cv::imencode(".png", render(panels, width, panel_height), bytes)) throw Error("cannot encode a plot as PNG");
+  return {bytes.begin(), bytes.end()};
+}
+
+void save_png(const std::filesystem::path& file, const std::vector<Panel>& panels, int width, int panel_height) {
+  // Encoded in memory, then written with every step checked: imwrite picks the format by the
+  // name's extension and reports neither a full disk nor a failed close.
+  const std::string png = render_png(panels, width, panel_height);
+  std::FILE* out = std::fopen(file.c_str(), "wb");
+  if (!out) throw Error("cannot write plot " + file.string() + ": " + std::strerror(errno));
+  const bool written = std::fwrite(png.data(), 1, png.size(), out) == png.size();
+  const int saved_errno = errno;
+  if (std::fclose(out) != 0 || !written)
+    throw Error("cannot write plot " + file.string() + ": " + std::strerror(written ? errno : saved_errno));
 }
 
 }  // namespace kestrel::plot

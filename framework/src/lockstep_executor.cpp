@@ -1,6 +1,5 @@
 #include "lockstep_executor.hpp"
 
-#include <limits>
 #include <thread>
 
 namespace kestrel::detail {
@@ -14,50 +13,31 @@ void LockstepExecutor::deliver(Edge& edge, const Envelope& envelope) {
 
 void LockstepExecutor::enqueue(Edge& edge, const Envelope& envelope) {
   InputSlot& slot = edge.to->inputs[static_cast<std::size_t>(edge.to_port)];
-  ++edge.delivered;
-  edge.to->messages_in.fetch_add(1, std::memory_order_relaxed);
   if (slot.triggers()) {
-    edge.queue.push_back(envelope);
-    edge.note_queue_size();
+    edge.push(envelope);
   } else {
     slot.current = envelope;
+    edge.count_delivery();
   }
 }
 
 void LockstepExecutor::drain_inputs(NodeRuntime& node) {
-  for (;;) {
-    // The oldest waiting message across all triggering inputs goes first.
-    int next = -1;
-    std::uint64_t oldest = std::numeric_limits<std::uint64_t>::max();
-    for (std::size_t i = 0; i < node.inputs.size(); ++i) {
-      const Edge* e = node.inputs[i].edge;
-      if (e && !e->queue.empty() && e->queue.front().sequence < oldest) {
-        oldest = e->queue.front().sequence;
-        next = static_cast<int>(i);
-      }
-    }
-    if (next < 0 || run_.failed) return;
-    InputSlot& slot = node.inputs[static_cast<std::size_t>(next)];
-    slot.current = std::move(slot.edge->queue.front());
-    slot.edge->queue.pop_front();
-    node.current_trigger = next;
-    node.call(NodeRuntime::Call::process);
-    node.current_trigger = -1;
+  // The oldest waiting message across all triggering inputs goes first.
+  for (int next = node.oldest_waiting_input(); next >= 0 && !run_.failed; next = node.oldest_waiting_input()) {
+    node.take_message(next);
+    node.process_taken();
   }
 }
 
 void LockstepExecutor::drop_undelivered() {
   for (auto& [edge, _] : delayed_) ++edge->dropped;
   delayed_.clear();
-  for (auto& edge : run_.edges) {
-    edge->dropped += edge->queue.size();
-    edge->queue.clear();
-  }
+  for (auto& edge : run_.edges) edge->drop_queued();
 }
 
 Time LockstepExecutor::run(Progress& progress) {
   const auto& graph = run_.graph;
-  const std::optional<double> duration = run_.options.duration_s ? run_.options.duration_s : graph.duration_s;
+  const std::optional<double> duration = run_.duration_s();
   const Time end = duration ? from_seconds(*duration) : Time::max();
   const bool paced = graph.clock == ClockKind::wall;
   const auto wall_start = std::chrono::steady_clock::now();
@@ -87,12 +67,12 @@ Time LockstepExecutor::run(Progress& progress) {
 
     for (NodeRuntime* node : run_.order) {
       if (node->has_timer() && !node->source_ended && node->tick_time(node->ticks) == now_) {
-        node->call(NodeRuntime::Call::tick);
-        ++node->ticks;
+        node->run_tick();
       }
       drain_inputs(*node);
       if (run_.failed) break;
     }
+    run_.announce_when_running();
     progress.update(now_);
   }
   drop_undelivered();

@@ -1,5 +1,6 @@
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "run_state.hpp"
 
@@ -10,28 +11,46 @@ void Node::tick(Context&) {}
 void Node::finish(Context&) {}
 
 void NodeInit::set_rate(double hz) {
-  if (!(hz > 0.0) || !std::isfinite(hz)) throw Error("node '" + id_ + "': a timer rate must be positive");
+  if (!(hz > 0.0) || !std::isfinite(hz)) throw Error("node '" + id() + "': a timer rate must be positive");
   tick_interval_ns_ = 1e9 / hz;
 }
 
 void NodeInit::set_period(Duration period) {
-  if (period <= Duration::zero()) throw Error("node '" + id_ + "': a timer period must be positive");
+  if (period <= Duration::zero()) throw Error("node '" + id() + "': a timer period must be positive");
   tick_interval_ns_ = static_cast<double>(period.count());
 }
 
-std::shared_ptr<void> NodeInit::make_component_erased(const std::string& param_name, std::string_view kind) const {
-  const ParamSpec* spec = spec_.find_param(param_name);
-  if (!spec || spec->type != ParamType::component)
-    throw Error("node '" + id_ + "': '" + param_name + "' is not a component parameter in spec()");
-  if (spec->component_kind != kind)
-    throw Error("node '" + id_ + "': parameter '" + param_name + "' holds a " + spec->component_kind + ", not a " +
-                std::string(kind));
-  const auto config = params_.get<ComponentConfig>(param_name);
-  const ComponentType* type = registry_.find_component(kind, config.type);
-  if (!type) throw Error("node '" + id_ + "': no " + std::string(kind) + " named '" + config.type + "'");
-  static const Params kNoParams;
-  return type->factory(config.params ? *config.params : kNoParams);
+namespace detail {
+
+std::uint64_t derive_seed(std::uint64_t seed, std::string_view name) {
+  // FNV-1a of the name, mixed into the seed with splitmix64's finaliser.
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  for (unsigned char c : name) h = (h ^ c) * 0x100000001b3ull;
+  std::uint64_t z = seed + 0x9e3779b97f4a7c15ull * (h | 1u);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return z ^ (z >> 31);
 }
+
+std::shared_ptr<void> make_component(const Registry& registry, const std::string& owner, const ParamSet& owner_spec,
+                                     const Params& owner_params, const std::string& param_name, std::string_view kind,
+                                     std::uint64_t owner_seed, Logger& log) {
+  const ParamSpec* spec = owner_spec.find(param_name);
+  if (!spec || spec->type != ParamType::component)
+    throw Error("'" + owner + "': '" + param_name + "' is not a component parameter in spec()");
+  if (spec->component_kind != kind)
+    throw Error("'" + owner + "': parameter '" + param_name + "' holds a " + spec->component_kind + ", not a " +
+                std::string(kind));
+  const auto config = owner_params.get<ComponentConfig>(param_name);
+  const ComponentType* type = registry.find_component(kind, config.type);
+  if (!type) throw Error("'" + owner + "': no " + std::string(kind) + " named '" + config.type + "'");
+  static const Params kNoParams;
+  const ComponentInit init(owner + "." + param_name, type->spec.param_set(), config.params ? *config.params : kNoParams,
+                           registry, derive_seed(owner_seed, param_name), log);
+  return type->factory(init);
+}
+
+}  // namespace detail
 
 const Envelope& Context::envelope(std::string_view input) const {
   for (auto& slot : rt_.inputs)
@@ -55,11 +74,36 @@ std::mt19937_64& Context::rng() { return rt_.rng; }
 void Context::set_report_section(const std::string& key, nlohmann::json value, std::string markdown) {
   rt_.run->report.set_section(rt_.id(), key, std::move(value), std::move(markdown));
 }
-const std::filesystem::path& Context::artifact_dir() const { return rt_.run->report.artifact_dir(); }
+void Context::describe_metric(const std::string& path, std::string unit, bool higher_is_better, bool by_magnitude) {
+  rt_.run->report.describe_metric(rt_.id(), path, MetricMeta{std::move(unit), higher_is_better, by_magnitude});
+}
+void Context::describe_quantity(const std::string& path, std::string unit) {
+  rt_.run->report.describe_metric(rt_.id(), path, MetricMeta{std::move(unit), std::nullopt, false});
+}
+bool Context::keeps_artifacts() const { return rt_.run->report.keeps_artifacts(); }
+void Context::add_artifact(const std::string& file_name, std::string_view bytes, std::string caption) {
+  rt_.run->report.add_artifact(rt_.id(), file_name, bytes, std::move(caption));
+}
 void Context::end_of_stream() { rt_.source_ended = true; }
 void Context::request_stop() { rt_.run->stop_requested = true; }
 
 namespace detail {
+
+void Edge::count_delivery() {
+  ++delivered;
+  to->messages_in.fetch_add(1, std::memory_order_relaxed);
+}
+
+void Edge::push(const Envelope& envelope) {
+  queue.push_back(envelope);
+  high_water = std::max(high_water, queue.size());
+  count_delivery();
+}
+
+void Edge::drop_queued() {
+  dropped += queue.size();
+  queue.clear();
+}
 
 bool NodeRuntime::has_triggering_input() const {
   for (const auto& slot : inputs)
@@ -98,12 +142,43 @@ bool NodeRuntime::call(Call what) {
   return ok;
 }
 
+int NodeRuntime::oldest_waiting_input() const {
+  int next = -1;
+  std::uint64_t oldest = std::numeric_limits<std::uint64_t>::max();
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    const Edge* e = inputs[i].edge;
+    if (e && inputs[i].triggers() && !e->queue.empty() && e->queue.front().sequence < oldest) {
+      oldest = e->queue.front().sequence;
+      next = static_cast<int>(i);
+    }
+  }
+  return next;
+}
+
+void NodeRuntime::take_message(int input) {
+  InputSlot& slot = inputs[static_cast<std::size_t>(input)];
+  slot.current = std::move(slot.edge->queue.front());
+  slot.edge->queue.pop_front();
+  current_trigger = input;
+}
+
+bool NodeRuntime::process_taken() {
+  const bool ok = call(Call::process);
+  current_trigger = -1;
+  return ok;
+}
+
+void NodeRuntime::run_tick() {
+  call(Call::tick);
+  ++ticks;
+}
+
 void NodeRuntime::publish(std::string_view output, std::shared_ptr<const void> payload, std::string_view type) {
   const int index = config->type->spec.output_index(output);
   if (index < 0) throw Error("published on '" + std::string(output) + "', which is not an output of " + this->type());
   const PortSpec& port = config->type->spec.outputs()[static_cast<std::size_t>(index)];
-  if (port.type != type)
-    throw Error("published a " + std::string(type) + " on output '" + port.name + "', declared as " + port.type);
+  if (port.type() != type)
+    throw Error("published a " + std::string(type) + " on output '" + port.name + "', declared as " + port.type());
   if (!payload) throw Error("published a null message on output '" + port.name + "'");
   const Envelope envelope{std::move(payload), type, run->executor->now(),
                           run->next_sequence.fetch_add(1, std::memory_order_relaxed)};
@@ -167,6 +242,24 @@ bool RunState::instantiate() {
     }
   }
   return ok;
+}
+
+std::optional<double> RunState::duration_s() const {
+  return options.duration_s ? options.duration_s : graph.duration_s;
+}
+
+bool RunState::all_sources_ended() const {
+  for (const auto& node : nodes)
+    if (node->has_timer() && !node->source_ended) return false;
+  return true;
+}
+
+void RunState::announce_when_running() {
+  if (announced_) return;
+  for (const auto& node : nodes)
+    if (node->has_timer() && node->calls.load() == 0 && !node->source_ended) return;
+  announced_ = true;
+  if (options.on_running) options.on_running();
 }
 
 bool RunState::stopping() const {

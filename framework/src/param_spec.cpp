@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "kestrel/param_spec.hpp"
 #include "kestrel/params.hpp"
 
 namespace kestrel {
@@ -40,6 +41,13 @@ std::string to_string(const ParamValue& value) {
   };
   return std::visit(Visitor{}, value);
 }
+
+namespace detail {
+void throw_wrong_type(const std::string& name, const ParamValue& value, const char* wanted) {
+  throw Error("parameter '" + name + "' holds " + to_string(value) + ", which is not a " + wanted +
+              " as the node asked for");
+}
+}  // namespace detail
 
 ParamSpec component_param(std::string name, std::string kind, std::string default_type) {
   ParamSpec spec;

@@ -138,13 +138,13 @@ bool PluginHost::load(const fs::path& file) {
                                       it->second.plugin));
     info.components.push_back(key);
   }
+  // The message types this plugin is the first to bring (its own, and those its ports use).
+  for (const auto& [msg_name, m] : scratch.messages())
+    if (!registry_.find_message(msg_name)) info.messages.push_back(msg_name);
   registry_.set_current_plugin(name);
+  for (const auto& [msg_name, m] : scratch.messages()) registry_.add_message(m.info);
   for (const auto& [type, node] : scratch.nodes()) registry_.add_node(node.spec, node.factory);
   for (const auto& [key, c] : scratch.components()) registry_.add_component(c.kind, c.spec, c.factory);
-  for (const auto& [msg_name, m] : scratch.messages()) {
-    if (!registry_.find_message(msg_name)) info.messages.push_back(msg_name);
-    registry_.add_message(m.info);
-  }
   registry_.set_current_plugin("");
   loaded_files_.push_back(canonical);
   plugins_.push_back(std::move(info));

@@ -1,7 +1,5 @@
 #include "realtime_executor.hpp"
 
-#include <limits>
-
 namespace kestrel::detail {
 
 namespace {
@@ -11,19 +9,6 @@ namespace {
 void refresh_latest_inputs(NodeRuntime& node) {
   for (auto& slot : node.inputs)
     if (!slot.triggers() && slot.incoming_latest) slot.current = std::move(slot.incoming_latest);
-}
-
-int oldest_waiting_input(const NodeRuntime& node) {
-  int next = -1;
-  std::uint64_t oldest = std::numeric_limits<std::uint64_t>::max();
-  for (std::size_t i = 0; i < node.inputs.size(); ++i) {
-    const Edge* e = node.inputs[i].edge;
-    if (e && node.inputs[i].triggers() && !e->queue.empty() && e->queue.front().sequence < oldest) {
-      oldest = e->queue.front().sequence;
-      next = static_cast<int>(i);
-    }
-  }
-  return next;
 }
 
 }  // namespace
@@ -38,15 +23,13 @@ void RealtimeExecutor::deliver(Edge& edge, const Envelope& envelope) {
   }
   if (!slot.triggers()) {
     slot.incoming_latest = envelope;
-    ++edge.delivered;
-    to.messages_in.fetch_add(1, std::memory_order_relaxed);
+    edge.count_delivery();
     return;
   }
   const QueuePolicy& policy = edge.config->policy;
   switch (policy.kind) {
     case QueuePolicy::Kind::latest:
-      edge.dropped += edge.queue.size();
-      edge.queue.clear();
+      edge.drop_queued();
       break;
     case QueuePolicy::Kind::fifo:
       while (edge.queue.size() >= policy.capacity) {
@@ -62,10 +45,7 @@ void RealtimeExecutor::deliver(Edge& edge, const Envelope& envelope) {
       }
       break;
   }
-  edge.queue.push_back(envelope);
-  edge.note_queue_size();
-  ++edge.delivered;
-  to.messages_in.fetch_add(1, std::memory_order_relaxed);
+  edge.push(envelope);
   lock.unlock();
   to.wake.notify_one();
 }
@@ -75,17 +55,13 @@ void RealtimeExecutor::node_loop(NodeRuntime& node) {
   const bool has_triggers = node.has_triggering_input();
   std::unique_lock lock(node.mutex);
   while (!aborting_ && !run_.failed) {
-    if (const int next = oldest_waiting_input(node); next >= 0) {
-      InputSlot& slot = node.inputs[static_cast<std::size_t>(next)];
-      slot.current = std::move(slot.edge->queue.front());
-      slot.edge->queue.pop_front();
+    if (const int next = node.oldest_waiting_input(); next >= 0) {
+      node.take_message(next);
       refresh_latest_inputs(node);
-      node.current_trigger = next;
       lock.unlock();
       node.space.notify_all();
-      node.call(NodeRuntime::Call::process);
+      node.process_taken();
       lock.lock();
-      node.current_trigger = -1;
       continue;
     }
     const bool ticking = has_timer && !node.source_ended && !stopping_;
@@ -102,9 +78,8 @@ void RealtimeExecutor::node_loop(NodeRuntime& node) {
     }
     refresh_latest_inputs(node);
     lock.unlock();
-    node.call(NodeRuntime::Call::tick);
+    node.run_tick();
     lock.lock();
-    ++node.ticks;
     // A node that runs late skips the ticks it missed instead of bursting to catch up.
     const auto late = std::chrono::steady_clock::now() - start_;
     while (node.tick_time(node.ticks) < late) {
@@ -113,11 +88,8 @@ void RealtimeExecutor::node_loop(NodeRuntime& node) {
     }
   }
   node.exited = true;
-  for (auto& slot : node.inputs) {
-    if (!slot.edge) continue;
-    slot.edge->dropped += slot.edge->queue.size();
-    slot.edge->queue.clear();
-  }
+  for (auto& slot : node.inputs)
+    if (slot.edge) slot.edge->drop_queued();
   lock.unlock();
   node.space.notify_all();
   for (auto& port : node.outputs) {
@@ -132,12 +104,6 @@ void RealtimeExecutor::node_loop(NodeRuntime& node) {
   }
 }
 
-bool RealtimeExecutor::all_sources_ended() const {
-  for (const auto& node : run_.nodes)
-    if (node->has_timer() && !node->source_ended) return false;
-  return true;
-}
-
 void RealtimeExecutor::wake_all() {
   for (auto& node : run_.nodes) {
     { std::lock_guard lock(node->mutex); }
@@ -147,7 +113,7 @@ void RealtimeExecutor::wake_all() {
 }
 
 Time RealtimeExecutor::run(Progress& progress) {
-  const std::optional<double> duration = run_.options.duration_s ? run_.options.duration_s : run_.graph.duration_s;
+  const std::optional<double> duration = run_.duration_s();
   for (const auto& edge : run_.edges)
     if (!edge->config->delayed) ++edge->to->upstream_alive;
 
@@ -156,8 +122,9 @@ Time RealtimeExecutor::run(Progress& progress) {
   threads.reserve(run_.nodes.size());
   for (auto& node : run_.nodes) threads.emplace_back([this, n = node.get()] { node_loop(*n); });
 
-  while (!run_.stopping() && !all_sources_ended()) {
+  while (!run_.stopping() && !run_.all_sources_ended()) {
     if (duration && to_seconds(now()) >= *duration) break;
+    run_.announce_when_running();
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
     progress.update(now());
   }

@@ -22,7 +22,6 @@ class RealtimeExecutor final : public Executor {
 
  private:
   void node_loop(NodeRuntime& node);
-  bool all_sources_ended() const;
   void wake_all();
 
   RunState& run_;

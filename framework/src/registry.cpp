@@ -1,13 +1,7 @@
 #include "kestrel/registry.hpp"
 
-#include "kestrel/messages/actuator_command.hpp"
-#include "kestrel/messages/detections.hpp"
-#include "kestrel/messages/ground_truth.hpp"
-#include "kestrel/messages/point_cloud.hpp"
-#include "kestrel/messages/stereo_frame.hpp"
-#include "kestrel/messages/tracks.hpp"
-#include "kestrel/messages/trajectory_setpoint.hpp"
-#include "kestrel/messages/vehicle_state.hpp"
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace kestrel {
 
@@ -15,22 +9,24 @@ namespace {
 std::string origin(const std::string& plugin) { return plugin.empty() ? "the framework" : plugin; }
 }  // namespace
 
-Registry::Registry() {
-  add_message<msg::StereoFrame>();
-  add_message<msg::PointCloud>();
-  add_message<msg::Detections>();
-  add_message<msg::Tracks>();
-  add_message<msg::VehicleState>();
-  add_message<msg::TrajectorySetpoint>();
-  add_message<msg::ActuatorCommand>();
-  add_message<msg::GroundTruth>();
+Registry::Registry() { add_message<AnyMessage>(); }
+
+namespace {
+void check_spec(const std::string& what, const ParamSet& params) {
+  const auto problems = check_param_set(params);
+  if (!problems.empty()) throw Error(fmt::format("{} has a malformed spec: {}", what, fmt::join(problems, "; ")));
 }
+}  // namespace
 
 void Registry::add_node(NodeSpec spec, NodeFactory factory) {
   const std::string type = spec.type();
   if (auto it = nodes_.find(type); it != nodes_.end())
     throw Error("node type '" + type + "' is registered twice: by " + origin(it->second.plugin) + " and by " +
                 origin(current_plugin_));
+  if (spec.summary().empty()) throw Error("node type '" + type + "' has a malformed spec: no summary");
+  check_spec("node type '" + type + "'", spec.param_set());
+  for (const auto* ports : {&spec.inputs(), &spec.outputs()})
+    for (const auto& port : *ports) add_message(port.message);
   nodes_.emplace(type, NodeType{std::move(spec), std::move(factory), current_plugin_});
 }
 
@@ -39,6 +35,8 @@ void Registry::add_component(std::string kind, ComponentSpec spec, ComponentFact
   if (auto it = components_.find(key); it != components_.end())
     throw Error("component '" + key + "' is registered twice: by " + origin(it->second.plugin) + " and by " +
                 origin(current_plugin_));
+  if (spec.summary().empty()) throw Error("component '" + key + "' has a malformed spec: no summary");
+  check_spec("component '" + key + "'", spec.param_set());
   components_.emplace(key, ComponentType{std::move(kind), std::move(spec), std::move(factory), current_plugin_});
 }
 

@@ -1,5 +1,7 @@
 #include "kestrel/report.hpp"
 
+#include <fstream>
+
 #include "kestrel/error.hpp"
 
 namespace kestrel {
@@ -10,6 +12,51 @@ void Report::set_section(const std::string& owner, const std::string& key, nlohm
   if (it != sections_.end() && it->second.owner != owner)
     throw Error("report section '" + key + "' already belongs to node '" + it->second.owner + "'");
   sections_[key] = Section{owner, std::move(value), std::move(markdown)};
+}
+
+void Report::describe_metric(const std::string& owner, const std::string& path, MetricMeta meta) {
+  std::lock_guard lock(mutex_);
+  const auto dot = path.find('.');
+  const std::string section = path.substr(0, dot);
+  if (auto it = sections_.find(section); it != sections_.end() && it->second.owner != owner)
+    throw Error("metric '" + path + "' is in report section '" + section + "', which belongs to node '" +
+                it->second.owner + "'");
+  metrics_[path] = std::move(meta);
+}
+
+void Report::add_artifact(const std::string& owner, const std::string& file, std::string_view bytes,
+                          std::string caption) {
+  if (artifact_dir_.empty()) return;
+  if (file.empty() || file.find('/') != std::string::npos || file.front() == '.')
+    throw Error("'" + file + "' is not a plain file name for a report artifact");
+  {
+    std::lock_guard lock(mutex_);
+    for (const auto& a : artifacts_)
+      if (a.file == file && a.owner != owner)
+        throw Error("report file '" + file + "' was already added by node '" + a.owner + "'");
+  }
+  const std::filesystem::path path = artifact_dir_ / file;
+  std::ofstream out(path, std::ios::binary);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  out.close();
+  if (!out) throw Error("cannot write report file " + path.string());
+  std::lock_guard lock(mutex_);
+  for (auto& a : artifacts_)
+    if (a.file == file) {
+      a.caption = std::move(caption);
+      return;
+    }
+  artifacts_.push_back(Artifact{file, owner, std::move(caption)});
+}
+
+std::map<std::string, MetricMeta> Report::metrics() const {
+  std::lock_guard lock(mutex_);
+  return metrics_;
+}
+
+std::vector<Artifact> Report::artifacts() const {
+  std::lock_guard lock(mutex_);
+  return artifacts_;
 }
 
 std::map<std::string, Report::Section> Report::sections() const {

@@ -16,6 +16,8 @@ void flatten(const nlohmann::json& value, const std::string& prefix,
     for (const auto& [k, v] : value.items()) flatten(v, prefix.empty() ? k : prefix + "." + k, rows);
   } else if (value.is_number_float()) {
     rows.emplace_back(prefix, fmt::format("{:.4g}", value.get<double>()));
+  } else if (value.is_null()) {
+    rows.emplace_back(prefix, "undefined");  // a metric with nothing to measure (no matches, no frames)
   } else if (value.is_string()) {
     rows.emplace_back(prefix, value.get<std::string>());
   } else {
@@ -26,6 +28,7 @@ void flatten(const nlohmann::json& value, const std::string& prefix,
 void write_file(const std::filesystem::path& path, const std::string& text) {
   std::ofstream out(path);
   out << text;
+  out.close();  // a full disk shows only when the buffer is flushed
   if (!out) throw Error("cannot write " + path.string());
 }
 
@@ -58,6 +61,16 @@ void write_report(const std::filesystem::path& dir, const RunResult& result,
     md += fmt::format("\n## {}\n\n", key);
     md += section.markdown.empty() ? json_to_markdown_table(section.value) : section.markdown;
     if (!md.empty() && md.back() != '\n') md += '\n';
+  }
+  if (!result.report["artifacts"].empty()) {
+    md += "\n## Files\n\n";
+    for (const auto& a : result.report["artifacts"]) {
+      const std::string file = a["file"].get<std::string>();
+      const std::string caption = a["caption"].get<std::string>().empty() ? file : a["caption"].get<std::string>();
+      const bool image = file.size() > 4 && file.substr(file.size() - 4) == ".png";
+      md += image ? fmt::format("![{}]({})\n\n*{}* ({})\n\n", caption, file, caption, a["node"].get<std::string>())
+                  : fmt::format("- [{}]({}): {} ({})\n", file, file, caption, a["node"].get<std::string>());
+    }
   }
   md +=
       "\n## Nodes\n\n| node | type | in | out | drops | errors | p50 µs | p99 µs | max µs |\n"

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <fstream>
 
+#include "graph_record.hpp"
 #include "kestrel/runtime/run.hpp"
 #include "kestrel/version.hpp"
 #include "lockstep_executor.hpp"
@@ -128,12 +129,26 @@ RunResult run_graph(const GraphConfig& graph, const Registry& registry, const Ru
                      {"name", graph.name},
                      {"executor", graph.executor == ExecutorKind::lockstep ? "lockstep" : "realtime"},
                      {"clock", graph.clock == ClockKind::simulated ? "simulated" : "wall"},
-                     {"seed", options.seed.value_or(graph.seed)}}},
+                     {"seed", options.seed.value_or(graph.seed)},
+                     {"hash", detail::graph_hash(graph)},
+                     {"resolved", detail::resolved_graph_json(graph)}}},
                    {"outcome", outcome_name(result.outcome)},
                    {"errors", result.errors},
                    {"run_time_s", result.sim_time_s},
                    {"wall_time_s", result.wall_time_s},
                    {"stats", stats_json(result)}};
+  nlohmann::json metrics_meta = nlohmann::json::object();
+  for (const auto& [path, meta] : run.report.metrics()) {
+    nlohmann::json m = {{"unit", meta.unit}};
+    if (meta.higher_is_better) m["higher_is_better"] = *meta.higher_is_better;
+    if (meta.by_magnitude) m["by_magnitude"] = true;
+    metrics_meta[path] = std::move(m);
+  }
+  result.report["metrics_meta"] = std::move(metrics_meta);
+  nlohmann::json artifacts = nlohmann::json::array();
+  for (const auto& a : run.report.artifacts())
+    artifacts.push_back({{"file", a.file}, {"node", a.owner}, {"caption", a.caption}});
+  result.report["artifacts"] = std::move(artifacts);
   const auto sections = run.report.sections();
   for (const auto& [key, section] : sections) {
     if (result.report.contains(key)) {

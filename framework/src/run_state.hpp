@@ -8,6 +8,7 @@
 #include <deque>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -32,7 +33,12 @@ struct Edge {
   std::uint64_t dropped = 0;
   std::size_t high_water = 0;
 
-  void note_queue_size() { high_water = std::max(high_water, queue.size()); }
+  /// Counts one message accepted by this connection (into its queue or its latest slot).
+  void count_delivery();
+  /// Appends to the queue of a triggering input and counts the delivery.
+  void push(const Envelope& envelope);
+  /// Discards every queued message, counting each as dropped.
+  void drop_queued();
 };
 
 struct InputSlot {
@@ -97,6 +103,17 @@ class NodeRuntime {
   /// Returns false if the node threw.
   bool call(Call what);
 
+  /// The triggering input whose queue holds the oldest message (lowest sequence number), or -1
+  /// if every queue is empty. Messages are processed in this order under both executors.
+  int oldest_waiting_input() const;
+  /// Moves the oldest message of input `input`'s queue into the slot Context::get reads, and
+  /// makes it the trigger of the next process() call.
+  void take_message(int input);
+  /// Calls process() for the message taken with take_message(), then clears the trigger.
+  bool process_taken();
+  /// Calls tick() and counts it as done.
+  void run_tick();
+
   void publish(std::string_view output, std::shared_ptr<const void> payload, std::string_view type);
 };
 
@@ -119,12 +136,19 @@ class RunState {
 
   /// Builds every node. Returns false (with errors recorded) if a constructor threw.
   bool instantiate();
+  /// The run's length: the one in the options, else the graph's; none means until stopped.
+  std::optional<double> duration_s() const;
+  /// True once every node with a timer has called end_of_stream().
+  bool all_sources_ended() const;
+  /// Calls options.on_running the first time every source has been called (or has ended).
+  void announce_when_running();
   /// True once the run should wind down: stop requested, failed, or an external stop flag.
   bool stopping() const;
   void node_error(NodeRuntime& node, const std::string& what);
   std::vector<std::string> errors() const;
 
  private:
+  bool announced_ = false;
   mutable std::mutex errors_mutex_;
   std::vector<std::string> errors_;
 };

@@ -1,86 +1,92 @@
 #include "kestrel/tracking/track_manager.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 
 #include "kestrel/error.hpp"
 
 namespace kestrel::tracking {
 
-Selection parse_selection(const std::string& name) {
-  if (name == "longest_living") return Selection::longest_living;
-  if (name == "most_hits") return Selection::most_hits;
-  if (name == "nearest") return Selection::nearest;
-  throw Error("unknown target selection rule '" + name + "'");
+TrackManager::TrackManager(TrackerParts parts) : parts_(std::move(parts)) {
+  if (!parts_.filter) throw Error("a tracker needs a filter");
+  if (!parts_.associator) throw Error("a tracker needs an associator");
+  if (!parts_.initiator) throw Error("a tracker needs an initiator");
+  if (!parts_.deleter) throw Error("a tracker needs a deleter");
+  if (!parts_.selector) throw Error("a tracker needs a selector");
 }
 
-TrackManager::TrackManager(std::shared_ptr<const Associator> associator, FilterFactory factory,
-                           TrackManagerOptions options)
-    : associator_(std::move(associator)), factory_(std::move(factory)), options_(options) {
-  if (!associator_) throw Error("a tracker needs an associator");
+void TrackManager::start_track(const Eigen::Vector3d& detection) {
+  Track t{TrackStatus{next_id_++, 1, 1, 0, false, nullptr}, parts_.filter->start(detection)};
+  t.status.filter = t.filter.get();
+  t.status.confirmed = parts_.initiator->confirms(t.status);
+  ++counts_.tracks_started;
+  counts_.tracks_confirmed += t.status.confirmed;
+  tracks_.push_back(std::move(t));
 }
 
 msg::Tracks TrackManager::step(Time stamp, const std::vector<Eigen::Vector3d>& detections) {
+  if (last_stamp_ && stamp < *last_stamp_)
+    throw Error(fmt::format("detections went back in time: a frame captured at {:.6f} s came after one at {:.6f} s",
+                            to_seconds(stamp), to_seconds(*last_stamp_)));
   const double dt = last_stamp_ ? to_seconds(stamp - *last_stamp_) : 0.0;
-  if (dt < 0) throw Error("detections went back in time");
   last_stamp_ = stamp;
+  ++counts_.frames;
+  counts_.empty_frames += detections.empty();
 
+  // Predict to this frame, then associate.
   std::vector<PredictedMeasurement> predicted;
+  predicted.reserve(tracks_.size());
   for (auto& t : tracks_) {
     if (dt > 0) t.filter->predict(dt);
     predicted.push_back(t.filter->predicted_measurement());
   }
-  const algorithms::Assignment a = associator_->associate(predicted, detections);
+  const algorithms::Assignment a = parts_.associator->associate(predicted, detections);
 
+  // Update the tracks that were given a detection; count the misses of the others.
   for (std::size_t i = 0; i < tracks_.size(); ++i) {
-    Track& t = tracks_[i];
-    ++t.age;
+    TrackStatus& s = tracks_[i].status;
+    ++s.age;
     if (const int d = a.row_to_col[i]; d >= 0) {
-      t.filter->update(detections[static_cast<std::size_t>(d)]);
-      ++t.hits;
-      t.misses = 0;
-      if (t.hits >= options_.confirm_hits) t.confirmed = true;
+      tracks_[i].filter->update(detections[static_cast<std::size_t>(d)]);
+      ++s.hits;
+      s.misses = 0;
     } else {
-      ++t.misses;
+      ++s.misses;
+    }
+    if (!s.confirmed && parts_.initiator->confirms(s)) {
+      s.confirmed = true;
+      ++counts_.tracks_confirmed;
     }
   }
-  // A tentative track that misses once was noise: it goes at once, so it neither lingers in the
-  // association nor is confirmed later by an unrelated detection (SORT, Stone Soup's initiators).
-  tracks_.erase(
-      std::remove_if(tracks_.begin(), tracks_.end(),
-                     [&](const Track& t) { return t.misses > options_.max_misses || (!t.confirmed && t.misses > 0); }),
-      tracks_.end());
-  for (std::size_t d = 0; d < detections.size(); ++d) {
-    if (a.col_to_row[d] >= 0) continue;
-    tracks_.push_back(Track{next_id_++, 1, 1, 0, options_.confirm_hits <= 1, factory_(detections[d])});
-  }
+  // A tentative track's end is the initiator's call, a confirmed one's the deleter's.
+  std::erase_if(tracks_, [&](const Track& t) {
+    return t.status.confirmed ? parts_.deleter->deletes(t.status) : parts_.initiator->drops(t.status);
+  });
 
+  std::vector<std::size_t> unclaimed;
+  for (std::size_t d = 0; d < detections.size(); ++d)
+    if (a.col_to_row[d] < 0) unclaimed.push_back(d);
+  for (const std::size_t d : parts_.initiator->initiate(detections, unclaimed)) start_track(detections.at(d));
+
+  // Publish the confirmed tracks; the target is chosen among them.
   msg::Tracks out;
   out.stamp = stamp;
-  const Track* best = nullptr;
+  std::vector<TrackStatus> confirmed;
   for (const auto& t : tracks_) {
-    if (!t.confirmed) continue;  // tentative: not published, never the target
+    if (!t.status.confirmed) continue;
+    confirmed.push_back(t.status);
     msg::Track m;
-    m.id = t.id;
-    m.age = t.age;
-    m.hits = t.hits;
-    m.misses = t.misses;
+    m.id = t.status.id;
+    m.age = t.status.age;
+    m.hits = t.status.hits;
+    m.misses = t.status.misses;
     m.state = t.filter->state();
     m.covariance = t.filter->covariance();
     out.items.push_back(std::move(m));
-    auto better = [&](const Track& x, const Track& y) {  // is x a better target than y?
-      switch (options_.selection) {
-        case Selection::longest_living:
-          return x.age > y.age;
-        case Selection::most_hits:
-          return x.hits > y.hits;
-        case Selection::nearest:
-          return x.filter->predicted_measurement().position.norm() < y.filter->predicted_measurement().position.norm();
-      }
-      return false;
-    };
-    if (!best || better(t, *best)) best = &t;  // ties keep the older id
   }
-  if (best) out.selected_id = best->id;
+  out.selected_id = parts_.selector->select(confirmed);
+  if (const msg::Track* target = out.selected(); target && target->misses > 0) ++counts_.target_coasted_frames;
   return out;
 }
 

@@ -8,28 +8,21 @@ namespace kestrel::tracking {
 
 namespace {
 
-Metric parse_metric(const Params& p) {
-  return p.get<std::string>("metric") == "mahalanobis" ? Metric::mahalanobis : Metric::euclidean;
-}
-
-double gate_of(const Params& p) {
-  return parse_metric(p) == Metric::mahalanobis ? p.get<double>("gate_sigma") : p.get<double>("gate_m");
-}
-
-ComponentSpec with_common_params(ComponentSpec spec) {
-  return spec
-      .param(param("metric", std::string("euclidean"))
-                 .one_of({"euclidean", "mahalanobis"})
-                 .describe("distance between a track's predicted position and a detection"))
-      .param(param("gate_m", 1.0)
-                 .range(0.0, 1000.0)
-                 .with_unit("m")
-                 .describe(
-                     "euclidean: epsilon_max, never assign farther (paper: 1.0 m, its largest reconstruction error)"))
-      .param(param("gate_sigma", 3.0)
-                 .range(0.0, 1000.0)
-                 .with_unit("sigma")
-                 .describe("mahalanobis: never assign beyond this many standard deviations"));
+// The parameters both associators take.
+ConfigSpec<AssociatorConfig> associator_config() {
+  ConfigSpec<AssociatorConfig> c;
+  c.choice("metric", &AssociatorConfig::metric,
+           {{"euclidean", Metric::euclidean}, {"mahalanobis", Metric::mahalanobis}})
+      .describe("distance between a track's predicted position and a detection");
+  c.param("gate_m", &AssociatorConfig::gate_m)
+      .range(0.0, 1000.0)
+      .with_unit("m")
+      .describe("euclidean: epsilon_max, never assign farther (paper: 1.0 m, its largest reconstruction error)");
+  c.param("gate_sigma", &AssociatorConfig::gate_sigma)
+      .range(0.0, 1000.0)
+      .with_unit("sigma")
+      .describe("mahalanobis: never assign beyond this many standard deviations");
+  return c;
 }
 
 }  // namespace
@@ -50,13 +43,15 @@ Eigen::MatrixXd distance_matrix(const std::vector<PredictedMeasurement>& tracks,
 }
 
 ComponentSpec HungarianAssociator::spec() {
-  return with_common_params(ComponentSpec("hungarian", "Optimal assignment (Hungarian method) within a gate"))
+  return ComponentSpec("hungarian", "Optimal assignment (Hungarian method) within a gate")
       .details(
-          "Minimises the sum of track-to-detection distances over all tracks and detections (rectangular "
-          "linear sum assignment, paper section 2.3.1); a pair beyond the gate is never assigned.");
+          "Among the assignments with the most pairs within the gate, one of least total track-to-detection "
+          "distance (rectangular linear sum assignment, paper section 2.3.1).")
+      .config(associator_config());
 }
 
-HungarianAssociator::HungarianAssociator(const Params& p) : metric_(parse_metric(p)), gate_(gate_of(p)) {}
+HungarianAssociator::HungarianAssociator(const ComponentInit& init)
+    : HungarianAssociator(init.config<AssociatorConfig>()) {}
 
 algorithms::Assignment HungarianAssociator::associate(const std::vector<PredictedMeasurement>& tracks,
                                                       const std::vector<Eigen::Vector3d>& detections) const {
@@ -64,13 +59,15 @@ algorithms::Assignment HungarianAssociator::associate(const std::vector<Predicte
 }
 
 ComponentSpec GreedyAssociator::spec() {
-  return with_common_params(ComponentSpec("greedy", "Greedy nearest neighbour within a gate"))
+  return ComponentSpec("greedy", "Greedy nearest neighbour within a gate")
       .details(
-          "Repeatedly pairs the closest remaining track and detection; fast, and the baseline to A/B "
-          "against the Hungarian associator.");
+          "Repeatedly pairs the closest remaining track and detection; fast, and the baseline to A/B against the "
+          "Hungarian associator. Not optimal: an early closest pair can take the only detection within another "
+          "track's gate.")
+      .config(associator_config());
 }
 
-GreedyAssociator::GreedyAssociator(const Params& p) : metric_(parse_metric(p)), gate_(gate_of(p)) {}
+GreedyAssociator::GreedyAssociator(const ComponentInit& init) : GreedyAssociator(init.config<AssociatorConfig>()) {}
 
 algorithms::Assignment GreedyAssociator::associate(const std::vector<PredictedMeasurement>& tracks,
                                                    const std::vector<Eigen::Vector3d>& detections) const {

@@ -12,20 +12,28 @@ class DetectionDropout final : public Node {
   static constexpr Input<msg::Detections> kIn{"detections"};
   static constexpr Output<msg::Detections> kOut{"detections"};
 
+  struct Config {
+    int frames = 10;
+    double first_s = 3.0;
+    double period_s = 6.0;
+  };
+
   static NodeSpec spec() {
+    ConfigSpec<Config> c;
+    c.param("frames", &Config::frames).range(0, 100000).describe("frames per blackout");
+    c.param("first_s", &Config::first_s).range(0.0, 1e6).with_unit("s").describe("capture time of the first blackout");
+    c.param("period_s", &Config::period_s).range(0.001, 1e6).with_unit("s").describe("time between blackout starts");
     return NodeSpec("detection_dropout", "Temporary occlusion: drops every detection for N frames at a time")
         .details(
             "Frames are counted as they arrive. From first_s on, every period_s a blackout of `frames` frames "
             "publishes an empty detection list (with the frame's stamp), as if the intruder were hidden.")
         .input(kIn, "detections")
         .output(kOut, "detections, empty during blackouts")
-        .param(param("frames", 10).range(0, 100000).describe("frames per blackout"))
-        .param(param("first_s", 3.0).range(0.0, 1e6).with_unit("s").describe("capture time of the first blackout"))
-        .param(param("period_s", 6.0).range(0.001, 1e6).with_unit("s").describe("time between blackout starts"));
+        .config(std::move(c));
   }
 
-  explicit DetectionDropout(NodeInit& init)
-      : schedule_(init.param<int>("frames"), init.param<double>("first_s"), init.param<double>("period_s")) {}
+  explicit DetectionDropout(NodeInit& init) : DetectionDropout(init.config<Config>()) {}
+  explicit DetectionDropout(const Config& cfg) : schedule_(cfg.frames, cfg.first_s, cfg.period_s) {}
 
   void process(Context& ctx) override {
     const auto in = ctx.get(kIn);

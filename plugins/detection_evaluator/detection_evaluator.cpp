@@ -2,7 +2,6 @@
 // the simulator's ground truth, added to report.json as "detection".
 #include <fmt/format.h>
 
-#include <fstream>
 #include <kestrel/evaluation/scoring_params.hpp>
 #include <kestrel/evaluation/truth_pairing.hpp>
 #include <kestrel/messages/detections.hpp>
@@ -10,6 +9,7 @@
 #include <kestrel/plugin.hpp>
 #include <map>
 
+#include "detection_report.hpp"
 #include "detection_scoring.hpp"
 
 namespace kestrel::evaluation {
@@ -19,27 +19,33 @@ class DetectionEvaluator final : public Node {
   static constexpr Input<msg::Detections> kDetections{"detections"};
   static constexpr Input<msg::GroundTruth> kTruth{"truth"};
 
+  struct Config {
+    ScoringParams scoring{.section = "detection"};
+  };
+
   static NodeSpec spec() {
-    NodeSpec spec =
-        NodeSpec("detection_evaluator", "Precision, recall, RMSE and lag of detections against ground truth")
-            .details(
-                "Each frame's detections are matched to the truth of the same capture time by Hungarian assignment "
-                "of Euclidean distances; pairs farther than match_radius_m are never matched. Unmatched detections "
-                "are false positives; unmatched truth objects in view are misses. RMSE is per camera axis over "
-                "matched detections. The lag is the shift maximising the cross-correlation between the true curve "
-                "(at capture times) and the detected one (at the times detections reached this node): zero under "
-                "lockstep, the processing delay under realtime. Adds \"detection\" to report.json and writes "
-                "detections.csv.")
-            .input(kDetections, "detections to score")
-            .input(kTruth, "ground truth at each capture time");
-    return add_scoring_params(spec, "detection",
-                              "largest error still matched (paper: 1.0 m, its maximum reconstruction error)");
+    ConfigSpec<Config> c;
+    declare_scoring_params(c, &Config::scoring,
+                           "largest error still matched (paper: 1.0 m, its maximum reconstruction error)");
+    return NodeSpec("detection_evaluator", "Precision, recall, RMSE and lag of detections against ground truth")
+        .details(
+            "Each frame's detections are matched to the truth of the same capture time by Hungarian assignment "
+            "of Euclidean distances; pairs farther than match_radius_m are never matched. Unmatched detections "
+            "are false positives; unmatched truth objects in view are misses. RMSE is per camera axis over "
+            "matched detections. The lag is the shift maximising the cross-correlation between the true curve "
+            "(at capture times) and the detected one (at the times detections reached this node): zero under "
+            "lockstep, the processing delay under realtime. A figure with nothing to measure it on (precision "
+            "without detections, RMSE without matches) is null in report.json and \"undefined\" in report.md. "
+            "Adds \"detection\" to report.json, and with --report the matches and per-frame counts as "
+            "detection.csv and detection_per_frame.csv.")
+        .input(kDetections, "detections to score")
+        .input(kTruth, "ground truth at each capture time")
+        .config(std::move(c));
   }
 
-  explicit DetectionEvaluator(NodeInit& init) : DetectionEvaluator(scoring_params(init)) {}
+  explicit DetectionEvaluator(NodeInit& init) : DetectionEvaluator(init.config<Config>().scoring) {}
   explicit DetectionEvaluator(const ScoringParams& p)
-      : scorer_(p.match_radius_m),
-        skip_(p.skip_first_s),
+      : scorer_(p.match_radius_m, p.skip_first_s),
         max_lag_(p.max_lag_s),
         lag_step_(p.lag_step_s),
         section_(p.section) {}
@@ -51,36 +57,21 @@ class DetectionEvaluator final : public Node {
       const auto detections = ctx.get(kDetections);
       pairing_.add(detections->stamp, detections, to_seconds(ctx.now()));
     }
-    pairing_.pair([this](const msg::Detections& d, const msg::GroundTruth& t, double arrival) {
-      if (to_seconds(t.stamp) >= skip_) score(d, t, arrival);
-    });
+    pairing_.pair(
+        [this](const msg::Detections& d, const msg::GroundTruth& t, double arrival) { score(d, t, arrival); });
   }
 
   void finish(Context& ctx) override {
-    if (pairing_.unpaired() > 0)
+    if (pairing_.unpaired_items() > 0)
       ctx.log().warn("{} detection message(s) had no ground truth with their capture time; not scored",
-                     pairing_.unpaired());
-    const DetectionSummary s = scorer_.summary(max_lag_, lag_step_);
-    nlohmann::json json = {
-        {"frames", s.frames},
-        {"precision", s.precision},
-        {"recall", s.recall},
-        {"tp", s.tp},
-        {"fp", s.fp},
-        {"fn", s.fn},
-        {"rmse_m", {{"x", s.rmse.x()}, {"y", s.rmse.y()}, {"z", s.rmse.z()}}},
-        {"mean_error_m", {{"x", s.mean_error.x()}, {"y", s.mean_error.y()}, {"z", s.mean_error.z()}}},
-        {"lag_s", s.lag_s ? nlohmann::json(*s.lag_s) : nlohmann::json(nullptr)}};
-    const std::string lag = s.lag_s ? fmt::format("{:.3f}", *s.lag_s) : "n/a";
-    const std::string md = fmt::format(
-        "| frames | precision | recall | TP | FP | FN | RMSE x [m] | RMSE y [m] | RMSE z [m] | lag [s] |\n"
-        "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n"
-        "| {} | {:.3f} | {:.3f} | {} | {} | {} | {:.3f} | {:.3f} | {:.3f} | {} |\n\n"
-        "Mean error (bias) of matched detections: x {:+.3f} m, y {:+.3f} m, z {:+.3f} m.\n",
-        s.frames, s.precision, s.recall, s.tp, s.fp, s.fn, s.rmse.x(), s.rmse.y(), s.rmse.z(), lag, s.mean_error.x(),
-        s.mean_error.y(), s.mean_error.z());
-    ctx.set_report_section(section_, json, md);
-    if (!ctx.artifact_dir().empty()) write_csv(ctx.artifact_dir() / (section_ + ".csv"));
+                     pairing_.unpaired_items());
+    ReportSection section = detection_report(scorer_.summary(max_lag_, lag_step_));
+    add_unpaired(section, pairing_.unpaired_items(), pairing_.unpaired_truths());
+    publish_section(ctx, section_, section);
+    if (ctx.keeps_artifacts()) {
+      ctx.add_artifact(section_ + ".csv", matches_csv(), "matched detections with their errors");
+      ctx.add_artifact(section_ + "_per_frame.csv", counts_csv(), "TP, FP and FN per frame");
+    }
   }
 
  private:
@@ -90,6 +81,7 @@ class DetectionEvaluator final : public Node {
     std::vector<TruthObject> objects;
     for (const auto& o : truth.objects) objects.push_back({o.id, o.position_camera, o.in_view});
     const FrameScore frame = scorer_.add_frame(to_seconds(truth.stamp), arrival_s, found, objects);
+    if (!frame.scored) return;  // before skip_first_s
     for (const auto& m : frame.matches)
       rows_.push_back(
           fmt::format("{:.4f},{:.4f},{},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f}", frame.capture_s, arrival_s,
@@ -99,17 +91,19 @@ class DetectionEvaluator final : public Node {
     frames_.push_back(fmt::format("{:.4f},{},{},{}", frame.capture_s, frame.tp, frame.fp, frame.fn));
   }
 
-  void write_csv(const std::filesystem::path& file) const {
-    std::ofstream out(file);
-    out << "capture_s,arrival_s,truth_id,x,y,z,error_x,error_y,error_z\n";
-    for (const auto& r : rows_) out << r << '\n';
-    std::ofstream counts(file.parent_path() / (file.stem().string() + "_per_frame.csv"));
-    counts << "capture_s,tp,fp,fn\n";
-    for (const auto& r : frames_) counts << r << '\n';
+  std::string matches_csv() const {
+    std::string csv = "capture_s,arrival_s,truth_id,x,y,z,error_x,error_y,error_z\n";
+    for (const auto& r : rows_) csv += r + '\n';
+    return csv;
+  }
+  std::string counts_csv() const {
+    std::string csv = "capture_s,tp,fp,fn\n";
+    for (const auto& r : frames_) csv += r + '\n';
+    return csv;
   }
 
   DetectionScorer scorer_;
-  double skip_, max_lag_, lag_step_;
+  double max_lag_, lag_step_;
   std::string section_;
   TruthPairing<msg::Detections> pairing_;
   std::vector<std::string> rows_;

@@ -9,6 +9,10 @@ FrameScore DetectionScorer::add_frame(double capture_s, double arrival_s,
                                       const std::vector<TruthObject>& truth) {
   FrameScore score;
   score.capture_s = capture_s;
+  if (capture_s < skip_) {
+    score.scored = false;
+    return score;
+  }
   Eigen::MatrixXd cost(static_cast<Eigen::Index>(detections.size()), static_cast<Eigen::Index>(truth.size()));
   for (std::size_t d = 0; d < detections.size(); ++d)
     for (std::size_t t = 0; t < truth.size(); ++t)
@@ -52,11 +56,11 @@ DetectionSummary DetectionScorer::summary(double max_lag_s, double lag_step_s) c
   s.tp = tp_;
   s.fp = fp_;
   s.fn = fn_;
-  s.precision = tp_ + fp_ ? static_cast<double>(tp_) / static_cast<double>(tp_ + fp_) : 1.0;
-  s.recall = tp_ + fn_ ? static_cast<double>(tp_) / static_cast<double>(tp_ + fn_) : 1.0;
+  if (tp_ + fp_ > 0) s.precision = static_cast<double>(tp_) / static_cast<double>(tp_ + fp_);
+  if (tp_ + fn_ > 0) s.recall = static_cast<double>(tp_) / static_cast<double>(tp_ + fn_);
   if (tp_ > 0) {
-    s.rmse = (sum_sq_ / static_cast<double>(tp_)).cwiseSqrt();
-    s.mean_error = sum_ / static_cast<double>(tp_);
+    s.rmse = Eigen::Vector3d((sum_sq_ / static_cast<double>(tp_)).cwiseSqrt());
+    s.mean_error = Eigen::Vector3d(sum_ / static_cast<double>(tp_));
   }
   s.lag_s = algorithms::estimate_lag(truth_curve_, measured_curve_, max_lag_s, lag_step_s);
   return s;

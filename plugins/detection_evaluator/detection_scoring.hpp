@@ -24,6 +24,7 @@ struct Match {
 };
 
 struct FrameScore {
+  bool scored = true;  ///< false for a frame captured before skip_first_s: nothing counted
   double capture_s = 0.0;
   int tp = 0, fp = 0, fn = 0;
   std::vector<Match> matches;
@@ -32,19 +33,24 @@ struct FrameScore {
 struct DetectionSummary {
   std::uint64_t frames = 0;
   std::uint64_t tp = 0, fp = 0, fn = 0;
-  double precision = 0.0;  ///< TP / (TP + FP); 1 when nothing was detected
-  double recall = 0.0;     ///< TP / (TP + FN); 1 when nothing was there to find
-  Eigen::Vector3d rmse = Eigen::Vector3d::Zero();
-  Eigen::Vector3d mean_error = Eigen::Vector3d::Zero();  ///< bias of matched detections
+  // Each is undefined (empty) when there is nothing to measure it on, rather than a flattering
+  // convention: no detections, nothing to find, no matches, curves too short to correlate.
+  std::optional<double> precision;            ///< TP / (TP + FP); undefined without detections
+  std::optional<double> recall;               ///< TP / (TP + FN); undefined with nothing to find
+  std::optional<Eigen::Vector3d> rmse;        ///< per camera axis, over matches; undefined without
+  std::optional<Eigen::Vector3d> mean_error;  ///< bias of matched detections; undefined without
   std::optional<double> lag_s;
 };
 
 class DetectionScorer {
  public:
-  explicit DetectionScorer(double match_radius_m) : radius_(match_radius_m) {}
+  /// Frames captured before `skip_first_s` are not scored (the chain settling in).
+  explicit DetectionScorer(double match_radius_m, double skip_first_s = 0.0)
+      : radius_(match_radius_m), skip_(skip_first_s) {}
 
   /// Scores one frame. `arrival_s` is when the detections were available (the lag's time base).
   /// A truth object out of view is not a miss when undetected, but matching it is a hit.
+  /// A frame captured before skip_first_s changes nothing and comes back with `scored` false.
   FrameScore add_frame(double capture_s, double arrival_s, const std::vector<Eigen::Vector3d>& detections,
                        const std::vector<TruthObject>& truth);
 
@@ -52,6 +58,7 @@ class DetectionScorer {
 
  private:
   double radius_;
+  double skip_;
   std::uint64_t frames_ = 0, tp_ = 0, fp_ = 0, fn_ = 0;
   Eigen::Vector3d sum_sq_ = Eigen::Vector3d::Zero(), sum_ = Eigen::Vector3d::Zero();
   std::vector<algorithms::TimedPoint> truth_curve_;     // first truth object, at capture times

@@ -14,7 +14,28 @@ class EuclideanClusterer final : public Node {
   static constexpr Input<msg::PointCloud> kCloud{"cloud"};
   static constexpr Output<msg::Detections> kDetections{"detections"};
 
+  struct Config {
+    ClusterOptions clusters;  // the paper's 0.5 m, 20 and 200 points
+    std::int64_t snapshot_frame = 30;
+  };
+
   static NodeSpec spec() {
+    ConfigSpec<Config> c;
+    c.param("tolerance_m", &Config::clusters, &ClusterOptions::tolerance_m)
+        .range(0.001, 100.0)
+        .with_unit("m")
+        .describe("cluster distance (paper: 0.5 m)");
+    c.param("min_points", &Config::clusters, &ClusterOptions::min_points)
+        .range(1, 10000000)
+        .describe("smallest cluster kept (paper: 20)");
+    c.param("max_points", &Config::clusters, &ClusterOptions::max_points)
+        .range(1, 10000000)
+        .describe("largest cluster kept (paper: 200)");
+    c.param("snapshot_frame", &Config::snapshot_frame)
+        .at_least(-1)
+        .describe("cloud index drawn as clusters.png with --report; -1 = none");
+    c.rule("min_points <= max_points", {"min_points", "max_points"},
+           [](const Config& k) { return k.clusters.min_points <= k.clusters.max_points; });
     return NodeSpec("euclidean_clusterer", "Euclidean clusters (PCL); each cluster's centroid is a detection")
         .details(
             "Points closer than tolerance_m join one cluster. Clusters with fewer than min_points or more than "
@@ -22,27 +43,17 @@ class EuclideanClusterer final : public Node {
             "--report, frame `snapshot_frame` is drawn as clusters.png (front and top views).")
         .input(kCloud, "filtered camera-frame points")
         .output(kDetections, "cluster centroids with point count and extent")
-        .param(param("tolerance_m", 0.5).range(0.001, 100.0).with_unit("m").describe("cluster distance (paper: 0.5 m)"))
-        .param(param("min_points", 20).range(1, 10000000).describe("smallest cluster kept (paper: 20)"))
-        .param(param("max_points", 200).range(1, 10000000).describe("largest cluster kept (paper: 200)"))
-        .param(param("snapshot_frame", 30)
-                   .at_least(-1)
-                   .describe("cloud index drawn as clusters.png with --report; -1 = none"));
+        .config(std::move(c));
   }
 
-  explicit EuclideanClusterer(NodeInit& init) : snapshot_(init.param<std::int64_t>("snapshot_frame")) {
-    options_.tolerance_m = init.param<double>("tolerance_m");
-    options_.min_points = init.param<int>("min_points");
-    options_.max_points = init.param<int>("max_points");
-    if (options_.min_points > options_.max_points) throw Error("min_points must not exceed max_points");
-  }
+  explicit EuclideanClusterer(NodeInit& init) : cfg_(init.config<Config>()) {}
 
   void process(Context& ctx) override {
     const auto in = ctx.get(kCloud);
     if (!in->points) throw Error("point cloud message without points");
-    const Clusters clusters = find_clusters(in->points, options_);
-    if (clouds_++ == snapshot_ && !ctx.artifact_dir().empty())
-      draw(ctx.artifact_dir() / "clusters.png", *in->points, clusters);
+    const Clusters clusters = find_clusters(in->points, cfg_.clusters);
+    if (clouds_++ == cfg_.snapshot_frame && ctx.keeps_artifacts())
+      ctx.add_artifact("clusters.png", draw(*in->points, clusters), "filtered cloud and its clusters");
     msg::Detections out;
     out.stamp = in->stamp;
     out.frame = in->frame;
@@ -52,7 +63,7 @@ class EuclideanClusterer final : public Node {
 
  private:
   // Front (x, y) and top (x, z) views: all points grey, kept clusters in colour, centroids ringed.
-  static void draw(const std::filesystem::path& file, const pcl::PointCloud<pcl::PointXYZ>& cloud, const Clusters& c) {
+  static std::string draw(const pcl::PointCloud<pcl::PointXYZ>& cloud, const Clusters& c) {
     plot::Panel front{"filtered cloud, front view (camera frame)", "x [m]", "-y [m] (up)", {}};
     plot::Panel top{"filtered cloud, top view", "x [m]", "z [m] (depth)", {}};
     plot::Series all_front{"all points", {}, {}, plot::Series::Style::points, {170, 170, 170}, 1};
@@ -83,11 +94,10 @@ class EuclideanClusterer final : public Node {
       front.series.push_back(f);
       top.series.push_back(t);
     }
-    plot::save_png(file, {front, top}, 1000, 420);
+    return plot::render_png({front, top}, 1000, 420);
   }
 
-  ClusterOptions options_;
-  std::int64_t snapshot_;
+  Config cfg_;
   std::int64_t clouds_ = 0;
 };
 KESTREL_REGISTER_NODE(EuclideanClusterer)

@@ -12,7 +12,20 @@ class FalseAlarms final : public Node {
   static constexpr Input<msg::Detections> kIn{"detections"};
   static constexpr Output<msg::Detections> kOut{"detections"};
 
+  struct Config {
+    double rate_per_frame = 0.5;
+    FalseAlarmBox box;
+  };
+
   static NodeSpec spec() {
+    ConfigSpec<Config> c;
+    c.param("rate_per_frame", &Config::rate_per_frame).range(0.0, 1000.0).describe("mean false detections per frame");
+    c.param("box_min_m", &Config::box, &FalseAlarmBox::min)
+        .with_unit("m")
+        .describe("box corner, camera frame (x right, y down, z ahead)");
+    c.param("box_max_m", &Config::box, &FalseAlarmBox::max).with_unit("m").describe("opposite box corner");
+    c.rule("box_min_m <= box_max_m on every axis", {"box_min_m", "box_max_m"},
+           [](const Config& k) { return (k.box.max - k.box.min).minCoeff() >= 0.0; });
     return NodeSpec("false_alarms", "Clutter: adds Poisson false detections, uniform in a box, to every frame")
         .details(
             "Each frame gets a Poisson number of false detections with mean rate_per_frame, uniformly "
@@ -21,20 +34,11 @@ class FalseAlarms final : public Node {
             "Drawn with the node's seeded generator: lockstep runs reproduce.")
         .input(kIn, "detections")
         .output(kOut, "the same detections followed by the false ones")
-        .param(param("rate_per_frame", 0.5).range(0.0, 1000.0).describe("mean false detections per frame"))
-        .param(param("box_min_m", std::vector<double>{-3.0, -2.0, 2.0})
-                   .with_length(3)
-                   .with_unit("m")
-                   .describe("box corner, camera frame (x right, y down, z ahead)"))
-        .param(param("box_max_m", std::vector<double>{3.0, 2.0, 10.0})
-                   .with_length(3)
-                   .with_unit("m")
-                   .describe("opposite box corner"));
+        .config(std::move(c));
   }
 
-  explicit FalseAlarms(NodeInit& init)
-      : model_(init.param<double>("rate_per_frame"),
-               FalseAlarmBox{init.param<Eigen::Vector3d>("box_min_m"), init.param<Eigen::Vector3d>("box_max_m")}) {}
+  explicit FalseAlarms(NodeInit& init) : FalseAlarms(init.config<Config>()) {}
+  explicit FalseAlarms(const Config& cfg) : model_(cfg.rate_per_frame, cfg.box) {}
 
   void process(Context& ctx) override {
     const auto in = ctx.get(kIn);

@@ -7,12 +7,74 @@
 
 namespace kestrel::intruder {
 
+struct IntruderConfig {
+  enum class Shape { figure8, line, random, file };
+  enum class AtEnd { hold, repeat };
+  Shape shape = Shape::figure8;
+  double rate_hz = 100.0;
+  std::int64_t object_id = 1;
+  double start_s = 0.0;
+  Eigen::Vector3d camera_position_m{0.0, 0.0, 2.0};
+  double camera_yaw_deg = 0.0;
+  double distance_m = 5.0;  // the paper flies the figure-8 at 2.5, 5.0 and 7.5 m
+  double half_width_m = 1.0;
+  double half_height_m = 0.5;
+  double period_s = 12.0;
+  Eigen::Vector3d line_start_m{5.0, 3.0, 2.0};
+  Eigen::Vector3d line_end_m{5.0, -3.0, 2.0};
+  double speed_mps = 1.0;
+  Eigen::Vector3d random_centre_m{5.0, 0.0, 2.0};
+  Eigen::Vector3d random_half_extent_m{1.0, 1.5, 0.75};
+  double max_speed_mps = 3.0;
+  std::string file;
+  AtEnd at_end = AtEnd::repeat;
+};
+
 class IntruderNode final : public Node {
  public:
   static constexpr Input<msg::GroundTruth> kAlso{"also"};
   static constexpr Output<msg::GroundTruth> kTruth{"truth"};
 
   static NodeSpec spec() {
+    using C = IntruderConfig;
+    ConfigSpec<C> c;
+    c.choice("shape", &C::shape,
+             {{"figure8", C::Shape::figure8},
+              {"line", C::Shape::line},
+              {"random", C::Shape::random},
+              {"file", C::Shape::file}})
+        .describe("trajectory");
+    c.param("rate_hz", &C::rate_hz).with_unit("Hz").range(1.0, 10000.0).describe("state publication rate");
+    c.param("object_id", &C::object_id).at_least(0).describe("ground-truth id of this intruder");
+    c.param("start_s", &C::start_s).with_unit("s").describe("time into the trajectory at which the run starts");
+    c.param("camera_position_m", &C::camera_position_m).with_unit("m").describe("reference camera position (world)");
+    c.param("camera_yaw_deg", &C::camera_yaw_deg)
+        .with_unit("deg")
+        .range(-360, 360)
+        .describe("reference camera heading");
+    c.param("distance_m", &C::distance_m)
+        .with_unit("m")
+        .range(0.5, 100.0)
+        .describe("figure8: distance of its plane from the camera (paper: 2.5, 5.0, 7.5)");
+    c.param("half_width_m", &C::half_width_m).with_unit("m").range(0.0, 50.0).describe("figure8: half width");
+    c.param("half_height_m", &C::half_height_m).with_unit("m").range(0.0, 50.0).describe("figure8: half height");
+    c.param("period_s", &C::period_s).with_unit("s").range(0.5, 3600.0).describe("figure8: time for one loop");
+    c.param("line_start_m", &C::line_start_m).with_unit("m").describe("line: start (world)");
+    c.param("line_end_m", &C::line_end_m).with_unit("m").describe("line: end (world)");
+    c.param("speed_mps", &C::speed_mps).with_unit("m/s").range(0.0, 100.0).describe("line: speed");
+    c.param("random_centre_m", &C::random_centre_m)
+        .with_unit("m")
+        .describe("random: centre of the box it stays in (world)");
+    c.param("random_half_extent_m", &C::random_half_extent_m)
+        .with_unit("m")
+        .range(0.0, 100.0)
+        .describe("random: half size of that box");
+    c.param("max_speed_mps", &C::max_speed_mps).with_unit("m/s").range(0.0, 100.0).describe("random: speed limit");
+    c.param("file", &C::file).describe("file: CSV of t,x,y,z (s, world m)");
+    c.choice("at_end", &C::at_end, {{"hold", C::AtEnd::hold}, {"repeat", C::AtEnd::repeat}})
+        .describe("line and file: after the end, hold the last point or go again (line: back and forth)");
+    c.rule("file is set when shape = file", {"shape", "file"},
+           [](const C& k) { return k.shape != C::Shape::file || !k.file.empty(); });
     return NodeSpec("intruder",
                     "A simulated intruder flying a figure-8, a line, random manoeuvres or a recorded flight")
         .details(
@@ -23,74 +85,10 @@ class IntruderNode final : public Node {
         .input(kAlso, "other intruders' truth, published together with this one (chain intruders to fly several)",
                {.trigger = Trigger::latest, .optional = true})
         .output(kTruth, "the intruder's true state (and those arriving on `also`)")
-        .param(
-            param("shape", std::string("figure8")).one_of({"figure8", "line", "random", "file"}).describe("trajectory"))
-        .param(param("rate_hz", 100.0).with_unit("Hz").range(1.0, 10000.0).describe("state publication rate"))
-        .param(param("object_id", 1).at_least(0).describe("ground-truth id of this intruder"))
-        .param(param("start_s", 0.0).with_unit("s").describe("time into the trajectory at which the run starts"))
-        .param(param("camera_position_m", std::vector<double>{0.0, 0.0, 2.0})
-                   .with_length(3)
-                   .with_unit("m")
-                   .describe("reference camera position (world)"))
-        .param(param("camera_yaw_deg", 0.0).with_unit("deg").range(-360, 360).describe("reference camera heading"))
-        .param(param("distance_m", 5.0)
-                   .with_unit("m")
-                   .range(0.5, 100.0)
-                   .describe("figure8: distance of its plane from the camera (paper: 2.5, 5.0, 7.5)"))
-        .param(param("half_width_m", 1.0).with_unit("m").range(0.0, 50.0).describe("figure8: half width"))
-        .param(param("half_height_m", 0.5).with_unit("m").range(0.0, 50.0).describe("figure8: half height"))
-        .param(param("period_s", 12.0).with_unit("s").range(0.5, 3600.0).describe("figure8: time for one loop"))
-        .param(param("line_start_m", std::vector<double>{5.0, 3.0, 2.0})
-                   .with_length(3)
-                   .with_unit("m")
-                   .describe("line: start (world)"))
-        .param(param("line_end_m", std::vector<double>{5.0, -3.0, 2.0})
-                   .with_length(3)
-                   .with_unit("m")
-                   .describe("line: end (world)"))
-        .param(param("speed_mps", 1.0).with_unit("m/s").range(0.0, 100.0).describe("line: speed"))
-        .param(param("random_centre_m", std::vector<double>{5.0, 0.0, 2.0})
-                   .with_length(3)
-                   .with_unit("m")
-                   .describe("random: centre of the box it stays in (world)"))
-        .param(param("random_half_extent_m", std::vector<double>{1.0, 1.5, 0.75})
-                   .with_length(3)
-                   .with_unit("m")
-                   .range(0.0, 100.0)
-                   .describe("random: half size of that box"))
-        .param(param("max_speed_mps", 3.0).with_unit("m/s").range(0.0, 100.0).describe("random: speed limit"))
-        .param(param("file", std::string("")).describe("file: CSV of t,x,y,z (s, world m)"))
-        .param(param("at_end", std::string("repeat"))
-                   .one_of({"hold", "repeat"})
-                   .describe("line and file: after the end, hold the last point or go again (line: back and forth)"));
+        .config(std::move(c));
   }
 
-  explicit IntruderNode(NodeInit& init)
-      : id_(static_cast<std::uint64_t>(init.param<std::int64_t>("object_id"))),
-        start_(init.param<double>("start_s")),
-        camera_(geometry::level_camera(init.param<Eigen::Vector3d>("camera_position_m"),
-                                       init.param<double>("camera_yaw_deg") * M_PI / 180.0)) {
-    const std::string shape = init.param<std::string>("shape");
-    const bool repeat = init.param<std::string>("at_end") == "repeat";
-    if (shape == "figure8") {
-      trajectory_ =
-          std::make_unique<FigureEight>(camera_, init.param<double>("distance_m"), init.param<double>("half_width_m"),
-                                        init.param<double>("half_height_m"), init.param<double>("period_s"));
-    } else if (shape == "line") {
-      trajectory_ = std::make_unique<StraightLine>(init.param<Eigen::Vector3d>("line_start_m"),
-                                                   init.param<Eigen::Vector3d>("line_end_m"),
-                                                   init.param<double>("speed_mps"), repeat);
-    } else if (shape == "random") {
-      trajectory_ = std::make_unique<RandomManoeuvre>(init.param<Eigen::Vector3d>("random_centre_m"),
-                                                      init.param<Eigen::Vector3d>("random_half_extent_m"),
-                                                      init.param<double>("max_speed_mps"), init.seed());
-    } else {
-      const std::string file = init.param<std::string>("file");
-      if (file.empty()) throw Error("shape 'file' needs the 'file' parameter (a CSV of t,x,y,z)");
-      trajectory_ = std::make_unique<RecordedFlight>(file, repeat);
-    }
-    init.set_rate(init.param<double>("rate_hz"));
-  }
+  explicit IntruderNode(NodeInit& init) : IntruderNode(init, init.config<IntruderConfig>()) {}
 
   void tick(Context& ctx) override {
     const State s = trajectory_->at(start_ + to_seconds(ctx.now()));
@@ -116,6 +114,32 @@ class IntruderNode final : public Node {
   }
 
  private:
+  using Shape = IntruderConfig::Shape;
+
+  IntruderNode(NodeInit& init, const IntruderConfig& cfg)
+      : id_(static_cast<std::uint64_t>(cfg.object_id)),
+        start_(cfg.start_s),
+        camera_(geometry::level_camera(cfg.camera_position_m, cfg.camera_yaw_deg * M_PI / 180.0)) {
+    const bool repeat = cfg.at_end == IntruderConfig::AtEnd::repeat;
+    switch (cfg.shape) {
+      case Shape::figure8:
+        trajectory_ =
+            std::make_unique<FigureEight>(camera_, cfg.distance_m, cfg.half_width_m, cfg.half_height_m, cfg.period_s);
+        break;
+      case Shape::line:
+        trajectory_ = std::make_unique<StraightLine>(cfg.line_start_m, cfg.line_end_m, cfg.speed_mps, repeat);
+        break;
+      case Shape::random:
+        trajectory_ = std::make_unique<RandomManoeuvre>(cfg.random_centre_m, cfg.random_half_extent_m,
+                                                        cfg.max_speed_mps, init.seed());
+        break;
+      case Shape::file:
+        trajectory_ = std::make_unique<RecordedFlight>(cfg.file, repeat);
+        break;
+    }
+    init.set_rate(cfg.rate_hz);
+  }
+
   std::uint64_t id_;
   double start_;
   geometry::CameraPose camera_;

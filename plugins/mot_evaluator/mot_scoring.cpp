@@ -45,7 +45,8 @@ std::vector<bool> TrackingScorer::set_aside(const msg::Tracks& tracks, const msg
   return aside;
 }
 
-void TrackingScorer::add_frame(const msg::Tracks& tracks, const msg::GroundTruth& truth, double arrival_s) {
+bool TrackingScorer::add_frame(const msg::Tracks& tracks, const msg::GroundTruth& truth, double arrival_s) {
+  if (to_seconds(truth.stamp) < skip_) return false;
   std::vector<const msg::GroundTruthObject*> visible;
   for (const auto& o : truth.objects)
     if (o.in_view) visible.push_back(&o);
@@ -70,7 +71,7 @@ void TrackingScorer::add_frame(const msg::Tracks& tracks, const msg::GroundTruth
   // The selected track against the object it is matched to this frame; the lag on the first
   // object's curve.
   if (!truth.objects.empty()) truth_curve_.push_back({to_seconds(truth.stamp), truth.objects.front().position_camera});
-  if (!selected) return;
+  if (!selected) return true;
   for (const auto& [i, j] : mot_.last_matches()) {
     if (scored[static_cast<std::size_t>(j)]->id != selected->id) continue;
     const msg::GroundTruthObject& object = *visible[static_cast<std::size_t>(i)];
@@ -79,6 +80,7 @@ void TrackingScorer::add_frame(const msg::Tracks& tracks, const msg::GroundTruth
     ++selected_samples_;
     if (object.id == truth.objects.front().id) selected_curve_.push_back({arrival_s, selected->position()});
   }
+  return true;
 }
 
 // Frames count when an intruder is in view. A target near an intruder is on target (one out of

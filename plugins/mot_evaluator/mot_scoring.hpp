@@ -36,11 +36,14 @@ struct TrackingSummary {
 
 class TrackingScorer {
  public:
-  explicit TrackingScorer(double match_radius_m) : radius_(match_radius_m) {}
+  /// Frames captured before `skip_first_s` are not scored (the tracker settling in).
+  explicit TrackingScorer(double match_radius_m, double skip_first_s = 0.0)
+      : radius_(match_radius_m), skip_(skip_first_s) {}
 
   /// One frame. `arrival_s` is when the tracks were available (the lag's time base). Objects out
-  /// of view are neither missed nor found, and a track on one is not a false positive.
-  void add_frame(const msg::Tracks& tracks, const msg::GroundTruth& truth, double arrival_s);
+  /// of view are neither missed nor found, and a track on one is not a false positive. Returns
+  /// false, changing nothing, for a frame captured before skip_first_s.
+  bool add_frame(const msg::Tracks& tracks, const msg::GroundTruth& truth, double arrival_s);
 
   TrackingSummary summary(double max_lag_s = 1.0, double lag_step_s = 0.001) const;
 
@@ -49,6 +52,7 @@ class TrackingScorer {
   void score_target(const msg::GroundTruth& truth, const msg::Track* selected);
 
   double radius_;
+  double skip_;
   algorithms::ClearMotAccumulator mot_;
   Eigen::Vector3d selected_sq_ = Eigen::Vector3d::Zero();
   std::uint64_t selected_samples_ = 0;

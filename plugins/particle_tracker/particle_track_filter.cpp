@@ -24,21 +24,12 @@ std::mutex& mrpt_generator_mutex() {
 
 }  // namespace
 
-mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm resampling_method(const std::string& name) {
-  using PF = mrpt::bayes::CParticleFilter;
-  if (name == "multinomial") return PF::prMultinomial;
-  if (name == "residual") return PF::prResidual;
-  if (name == "stratified") return PF::prStratified;
-  if (name == "systematic") return PF::prSystematic;
-  throw Error("unknown resampling method '" + name + "'");
-}
-
 ParticleTrackFilter::ParticleTrackFilter(const Eigen::Vector3d& z, const ParticleOptions& options, std::uint64_t seed)
     : options_(options), rng_(seed) {
   if (options.particles < 1) throw Error("a particle filter needs at least one particle");
   if (options.max_correction_stages < 1) throw Error("a particle filter update needs at least one stage");
   filter_.m_options.PF_algorithm = mrpt::bayes::CParticleFilter::pfStandardProposal;
-  filter_.m_options.resamplingMethod = resampling_method(options.resampling);
+  filter_.m_options.resamplingMethod = options.resampling;
   filter_.m_options.BETA = options.resample_below_ess;
   filter_.m_options.sampleSize = static_cast<unsigned>(options.particles);
   // Particles drawn from the paper's prior: N(z, p diag(1, 900, 30.25)) per axis.

@@ -9,11 +9,10 @@
 #include <mrpt/bayes/CParticleFilterData.h>
 
 #include <random>
-#include <string>
 #include <vector>
 
 #include "kestrel/tracking/constant_acceleration.hpp"
-#include "kestrel/tracking/track_manager.hpp"
+#include "kestrel/tracking/filter.hpp"
 
 namespace kestrel::tracking {
 
@@ -22,10 +21,10 @@ struct ParticleOptions {
   double q = 1.0;
   double r = 1.0;
   double p = 1.0;
-  std::string resampling = "systematic";  ///< multinomial, residual, stratified, systematic
-  double resample_below_ess = 0.5;        ///< resample when the effective sample size falls below this share
-  double kernel_bandwidth = 0.5;          ///< h of the regularisation kernel after resampling (0 = none)
-  int max_correction_stages = 10;         ///< tempered stages of one update at most (1 = plain update)
+  mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm resampling = mrpt::bayes::CParticleFilter::prSystematic;
+  double resample_below_ess = 0.5;  ///< resample when the effective sample size falls below this share
+  double kernel_bandwidth = 0.5;    ///< h of the regularisation kernel after resampling (0 = none)
+  int max_correction_stages = 10;   ///< tempered stages of one update at most (1 = plain update)
 };
 
 using ParticleData = mrpt::bayes::CParticleFilterData<State, mrpt::bayes::particle_storage_mode::VALUE>;
@@ -60,8 +59,5 @@ class ParticleTrackFilter final
   Eigen::Vector3d pending_ = Eigen::Vector3d::Zero();
   bool resampling_ = false;  // set by the hook: MRPT is about to resample
 };
-
-/// "multinomial", "residual", "stratified" or "systematic" as MRPT's enum.
-mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm resampling_method(const std::string& name);
 
 }  // namespace kestrel::tracking

@@ -10,107 +10,147 @@
 
 namespace kestrel::stereo {
 
+namespace {
+std::string encode_png(const cv::Mat& image) {
+  std::vector<unsigned char> bytes;
+  if (!cv::imencode(".png", image, bytes)) throw Error("cannot encode a snapshot as PNG");
+  return {bytes.begin(), bytes.end()};
+}
+}  // namespace
+
 class StereoDepth final : public Node {
  public:
   static constexpr Input<msg::StereoFrame> kFrame{"frame"};
   static constexpr Output<msg::PointCloud> kCloud{"cloud"};
 
+  struct Config {
+    MatcherOptions matcher;
+    double min_depth_m = 0.5;  // the oCamS's range: 0.5 to 15 m
+    double max_depth_m = 15.0;
+    int pixel_step = 1;
+    int downscale = 1;
+    std::int64_t snapshot_frame = 30;
+  };
+
   static NodeSpec spec() {
+    using M = MatcherOptions;
+    ConfigSpec<Config> c;
+    c.param("algorithm", &Config::matcher, &M::algorithm).one_of({"sgbm", "bm"}).describe("OpenCV matcher");
+    c.param("mode", &Config::matcher, &M::mode)
+        .one_of({"sgbm", "hh", "sgbm_3way", "hh4"})
+        .describe("SGBM mode: 5 paths, full 8 paths, 3-way or 4-path HH");
+    c.param("min_disparity", &Config::matcher, &M::min_disparity)
+        .range(-256, 256)
+        .with_unit("px")
+        .describe("smallest disparity searched");
+    c.param("num_disparities", &Config::matcher, &M::num_disparities)
+        .range(16, 1024)
+        .with_unit("px")
+        .describe("disparity search range, a multiple of 16 (112 reaches the oCamS's 0.5 m at fx 452, b 0.12)");
+    c.param("block_size", &Config::matcher, &M::block_size)
+        .range(1, 51)
+        .with_unit("px")
+        .describe("matched block size, odd");
+    c.param("p1", &Config::matcher, &M::p1)
+        .at_least(0)
+        .describe("SGBM smoothness penalty for +-1 disparity changes; 0 = 8 * block_size^2");
+    c.param("p2", &Config::matcher, &M::p2)
+        .at_least(0)
+        .describe("SGBM penalty for larger changes; 0 = 32 * block_size^2");
+    c.param("uniqueness_ratio", &Config::matcher, &M::uniqueness_ratio)
+        .range(0, 100)
+        .with_unit("%")
+        .describe("best match margin over the second");
+    c.param("speckle_window_size", &Config::matcher, &M::speckle_window_size)
+        .range(0, 10000)
+        .with_unit("px")
+        .describe("speckle filter region size; 0 = off");
+    c.param("speckle_range", &Config::matcher, &M::speckle_range)
+        .range(0, 64)
+        .with_unit("px")
+        .describe("disparity variation within a speckle region");
+    c.param("disp12_max_diff", &Config::matcher, &M::disp12_max_diff)
+        .range(-1, 1024)
+        .with_unit("px")
+        .describe("left-right check tolerance; -1 = off");
+    c.param("pre_filter_cap", &Config::matcher, &M::pre_filter_cap).range(1, 255).describe("pre-filter clipping");
+    c.param("texture_threshold", &Config::matcher, &M::texture_threshold)
+        .range(0, 10000)
+        .describe("BM only: minimum texture");
+    c.param("min_depth_m", &Config::min_depth_m)
+        .range(0.01, 1000.0)
+        .with_unit("m")
+        .describe("nearest point kept (oCamS: 0.5 m)");
+    c.param("max_depth_m", &Config::max_depth_m)
+        .range(0.01, 1000.0)
+        .with_unit("m")
+        .describe("farthest point kept (oCamS: 15 m)");
+    c.param("pixel_step", &Config::pixel_step)
+        .range(1, 16)
+        .with_unit("px")
+        .describe("reproject every n-th pixel and row");
+    c.param("downscale", &Config::downscale)
+        .range(1, 8)
+        .describe(
+            "match on images shrunk by this factor (num_disparities is divided by it too): faster, coarser depth");
+    c.param("snapshot_frame", &Config::snapshot_frame)
+        .at_least(-1)
+        .describe("frame index saved as PNG with --report; -1 = none");
+    // What OpenCV would refuse, or silently change, said before the run.
+    c.rule("min_depth_m < max_depth_m", {"min_depth_m", "max_depth_m"},
+           [](const Config& k) { return k.min_depth_m < k.max_depth_m; });
+    c.rule("num_disparities is a multiple of 16", {"num_disparities"},
+           [](const Config& k) { return k.matcher.num_disparities % 16 == 0; });
+    c.rule("block_size is odd", {"block_size"}, [](const Config& k) { return k.matcher.block_size % 2 == 1; });
+    c.rule("block_size >= 5 for algorithm bm", {"block_size", "algorithm"},
+           [](const Config& k) { return k.matcher.algorithm != "bm" || k.matcher.block_size >= 5; });
+    c.rule("pre_filter_cap <= 63 for algorithm bm", {"pre_filter_cap", "algorithm"},
+           [](const Config& k) { return k.matcher.algorithm != "bm" || k.matcher.pre_filter_cap <= 63; });
+    c.rule("p2 > p1 for algorithm sgbm (0 = 8 and 32 * block_size^2)", {"p2", "p1", "block_size", "algorithm"},
+           [](const Config& k) {
+             const int area = k.matcher.block_size * k.matcher.block_size;
+             const int p1 = k.matcher.p1 > 0 ? k.matcher.p1 : 8 * area;
+             const int p2 = k.matcher.p2 > 0 ? k.matcher.p2 : 32 * area;
+             return k.matcher.algorithm != "sgbm" || p2 > p1;
+           });
     return NodeSpec("stereo_depth", "Stereo disparity (OpenCV SGBM or BM) reprojected to a 3D point cloud")
         .details(
             "Each valid disparity d at pixel (u, v) becomes the point b/d * (u - cx, v - cy, f) in the left "
             "camera's optical frame (paper, equation 1), kept if its depth lies in [min_depth_m, max_depth_m]. "
-            "With --report, frame `snapshot_frame` is saved as left.png and disparity.png.")
+            "With --report, frame `snapshot_frame` is saved as left.png, right.png and disparity.png.")
         .input(kFrame, "rectified stereo pair")
         .output(kCloud, "camera-frame points")
-        .param(param("algorithm", std::string("sgbm")).one_of({"sgbm", "bm"}).describe("OpenCV matcher"))
-        .param(param("mode", std::string("sgbm"))
-                   .one_of({"sgbm", "hh", "sgbm_3way", "hh4"})
-                   .describe("SGBM mode: 5 paths, full 8 paths, 3-way or 4-path HH"))
-        .param(param("min_disparity", 0).range(-256, 256).with_unit("px").describe("smallest disparity searched"))
-        .param(
-            param("num_disparities", 112)
-                .range(16, 1024)
-                .with_unit("px")
-                .describe("disparity search range, a multiple of 16 (112 reaches the oCamS's 0.5 m at fx 452, b 0.12)"))
-        .param(param("block_size", 7).range(1, 51).with_unit("px").describe("matched block size, odd"))
-        .param(param("p1", 0).at_least(0).describe(
-            "SGBM smoothness penalty for +-1 disparity changes; 0 = 8 * block_size^2"))
-        .param(param("p2", 0).at_least(0).describe("SGBM penalty for larger changes; 0 = 32 * block_size^2"))
-        .param(param("uniqueness_ratio", 10).range(0, 100).with_unit("%").describe("best match margin over the second"))
-        .param(param("speckle_window_size", 100)
-                   .range(0, 10000)
-                   .with_unit("px")
-                   .describe("speckle filter region size; 0 = off"))
-        .param(param("speckle_range", 2)
-                   .range(0, 64)
-                   .with_unit("px")
-                   .describe("disparity variation within a speckle region"))
-        .param(param("disp12_max_diff", 1)
-                   .range(-1, 1024)
-                   .with_unit("px")
-                   .describe("left-right check tolerance; -1 = off"))
-        .param(param("pre_filter_cap", 63).range(1, 255).describe("pre-filter clipping"))
-        .param(param("texture_threshold", 10).range(0, 10000).describe("BM only: minimum texture"))
-        .param(
-            param("min_depth_m", 0.5).range(0.01, 1000.0).with_unit("m").describe("nearest point kept (oCamS: 0.5 m)"))
-        .param(
-            param("max_depth_m", 15.0).range(0.01, 1000.0).with_unit("m").describe("farthest point kept (oCamS: 15 m)"))
-        .param(param("pixel_step", 1).range(1, 16).with_unit("px").describe("reproject every n-th pixel and row"))
-        .param(param("downscale", 1)
-                   .range(1, 8)
-                   .describe("match on images shrunk by this factor (num_disparities is divided by it too): "
-                             "faster, coarser depth"))
-        .param(param("snapshot_frame", 30).at_least(-1).describe("frame index saved as PNG with --report; -1 = none"));
+        .config(std::move(c));
   }
 
-  explicit StereoDepth(NodeInit& init)
-      : min_depth_(init.param<double>("min_depth_m")),
-        max_depth_(init.param<double>("max_depth_m")),
-        step_(init.param<int>("pixel_step")),
-        downscale_(init.param<int>("downscale")),
-        snapshot_(init.param<std::int64_t>("snapshot_frame")) {
-    options_.algorithm = init.param<std::string>("algorithm");
-    options_.mode = init.param<std::string>("mode");
-    options_.min_disparity = init.param<int>("min_disparity");
+  explicit StereoDepth(NodeInit& init) : cfg_(init.config<Config>()) {
+    MatcherOptions options = cfg_.matcher;
     // Disparities shrink with the images; keep OpenCV's multiple of 16.
-    options_.num_disparities = std::max(16, (init.param<int>("num_disparities") / downscale_ + 15) / 16 * 16);
-    options_.block_size = init.param<int>("block_size");
-    options_.p1 = init.param<int>("p1");
-    options_.p2 = init.param<int>("p2");
-    options_.uniqueness_ratio = init.param<int>("uniqueness_ratio");
-    options_.speckle_window_size = init.param<int>("speckle_window_size");
-    options_.speckle_range = init.param<int>("speckle_range");
-    options_.disp12_max_diff = init.param<int>("disp12_max_diff");
-    options_.pre_filter_cap = init.param<int>("pre_filter_cap");
-    options_.texture_threshold = init.param<int>("texture_threshold");
-    if (min_depth_ >= max_depth_) throw Error("min_depth_m must be below max_depth_m");
-    matcher_ = make_matcher(options_);
+    options.num_disparities = std::max(16, (options.num_disparities / cfg_.downscale + 15) / 16 * 16);
+    num_disparities_ = options.num_disparities;
+    matcher_ = make_matcher(options);
   }
 
   void process(Context& ctx) override {
     const auto frame = ctx.get(kFrame);
-    const ScaledPair pair = downscale(frame->left, frame->right, frame->calibration, downscale_);
+    const ScaledPair pair = downscale(frame->left, frame->right, frame->calibration, cfg_.downscale);
     const cv::Mat disparity = compute_disparity(*matcher_, pair.left, pair.right);
     msg::PointCloud cloud;
     cloud.stamp = frame->stamp;
     cloud.frame = "camera";
-    cloud.points = reproject(disparity, pair.calibration, min_depth_, max_depth_, step_);
-    if (static_cast<std::int64_t>(frame->frame_index) == snapshot_ && !ctx.artifact_dir().empty()) {
-      cv::imwrite((ctx.artifact_dir() / "left.png").string(), frame->left);
-      cv::imwrite((ctx.artifact_dir() / "right.png").string(), frame->right);
-      cv::imwrite((ctx.artifact_dir() / "disparity.png").string(),
-                  colourise_disparity(disparity, options_.num_disparities));
+    cloud.points = reproject(disparity, pair.calibration, cfg_.min_depth_m, cfg_.max_depth_m, cfg_.pixel_step);
+    if (static_cast<std::int64_t>(frame->frame_index) == cfg_.snapshot_frame && ctx.keeps_artifacts()) {
+      ctx.add_artifact("left.png", encode_png(frame->left), "left image");
+      ctx.add_artifact("right.png", encode_png(frame->right), "right image");
+      ctx.add_artifact("disparity.png", encode_png(colourise_disparity(disparity, num_disparities_)),
+                       "disparity (near is warm)");
     }
     ctx.publish(kCloud, std::move(cloud));
   }
 
  private:
-  MatcherOptions options_;
-  double min_depth_, max_depth_;
-  int step_;
-  int downscale_;
-  std::int64_t snapshot_;
+  Config cfg_;
+  int num_disparities_;  // after downscaling
   cv::Ptr<cv::StereoMatcher> matcher_;
 };
 KESTREL_REGISTER_NODE(StereoDepth)

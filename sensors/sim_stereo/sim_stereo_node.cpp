@@ -13,6 +13,23 @@
 
 namespace kestrel::sim {
 
+// The WithRobot oCamS-1CGN-U at 640x480.
+struct SimStereoConfig {
+  int width = 640;
+  int height = 480;
+  double fps = 30.0;
+  double hfov_deg = 70.6;
+  double baseline_m = 0.12;
+  double min_depth_m = 0.5;
+  double max_depth_m = 15.0;
+  double noise_sigma = 1.5;
+  bool color = false;
+  Eigen::Vector3d camera_position_m{0.0, 0.0, 2.0};
+  double camera_yaw_deg = 0.0;
+  Eigen::Vector3d camera_offset_m{0.1, 0.0, 0.0};
+  SceneOptions scene;
+};
+
 class SimStereo final : public Node {
  public:
   static constexpr Input<msg::GroundTruth> kIntruders{"intruders"};
@@ -21,6 +38,56 @@ class SimStereo final : public Node {
   static constexpr Output<msg::GroundTruth> kTruth{"truth"};
 
   static NodeSpec spec() {
+    using C = SimStereoConfig;
+    ConfigSpec<C> c;
+    c.param("width", &C::width).range(64, 4096).with_unit("px").describe("image width");
+    c.param("height", &C::height).range(48, 4096).with_unit("px").describe("image height");
+    c.param("fps", &C::fps).range(0.1, 240.0).with_unit("Hz").describe("frame rate");
+    c.param("hfov_deg", &C::hfov_deg)
+        .range(10.0, 150.0)
+        .with_unit("deg")
+        .describe(
+            "horizontal field of view; 70.6 gives the oCamS's rectified fx = 452 px at 640 px (the paper "
+            "states 92.8)");
+    c.param("baseline_m", &C::baseline_m).range(0.01, 2.0).with_unit("m").describe("distance between the cameras");
+    c.param("min_depth_m", &C::min_depth_m)
+        .range(0.05, 100.0)
+        .with_unit("m")
+        .describe("nearest depth the camera measures");
+    c.param("max_depth_m", &C::max_depth_m)
+        .range(0.1, 1000.0)
+        .with_unit("m")
+        .describe("farthest depth the camera measures");
+    c.param("noise_sigma", &C::noise_sigma).range(0.0, 50.0).with_unit("grey levels").describe("Gaussian image noise");
+    c.param("color", &C::color).describe("publish BGR images instead of 8-bit grey");
+    c.param("camera_position_m", &C::camera_position_m)
+        .with_unit("m")
+        .describe("fixed camera position (world), when `pose` is not connected");
+    c.param("camera_yaw_deg", &C::camera_yaw_deg)
+        .range(-360.0, 360.0)
+        .with_unit("deg")
+        .describe("fixed camera heading");
+    c.param("camera_offset_m", &C::camera_offset_m)
+        .with_unit("m")
+        .describe("camera position in the vehicle's body frame, when `pose` is connected");
+    c.param("clutter_count", &C::scene, &SceneOptions::clutter_count)
+        .range(0, 500)
+        .describe("trees and buildings in the background");
+    c.param("clutter_min_range_m", &C::scene, &SceneOptions::clutter_min_range_m)
+        .range(0.0, 500.0)
+        .with_unit("m")
+        .describe("clutter's nearest distance from the world origin");
+    c.param("clutter_max_range_m", &C::scene, &SceneOptions::clutter_max_range_m)
+        .range(0.0, 500.0)
+        .with_unit("m")
+        .describe("clutter's farthest distance");
+    c.param("scene_seed", &C::scene, &SceneOptions::seed)
+        .at_least(0)
+        .describe("lays out the world and its textures; the run seed drives the noise");
+    c.rule("min_depth_m < max_depth_m", {"min_depth_m", "max_depth_m"},
+           [](const C& k) { return k.min_depth_m < k.max_depth_m; });
+    c.rule("clutter_min_range_m <= clutter_max_range_m", {"clutter_min_range_m", "clutter_max_range_m"},
+           [](const C& k) { return k.scene.clutter_min_range_m <= k.scene.clutter_max_range_m; });
     return NodeSpec("sim_stereo", "Simulated stereo camera: renders rectified image pairs of the world (MRPT, EGL)")
         .details(
             "Renders the left and right images of a textured world (ground, clutter, the intruders as hexacopters) "
@@ -33,56 +100,10 @@ class SimStereo final : public Node {
         .input(kPose, "pose of the vehicle carrying the camera", {.trigger = Trigger::latest, .optional = true})
         .output(kFrame, "rectified stereo pair with its calibration")
         .output(kTruth, "intruder positions at the capture time (camera and world frames)")
-        .param(param("width", 640).range(64, 4096).with_unit("px").describe("image width"))
-        .param(param("height", 480).range(48, 4096).with_unit("px").describe("image height"))
-        .param(param("fps", 30.0).range(0.1, 240.0).with_unit("Hz").describe("frame rate"))
-        .param(param("hfov_deg", 70.6)
-                   .range(10.0, 150.0)
-                   .with_unit("deg")
-                   .describe("horizontal field of view; 70.6 gives the oCamS's rectified fx = 452 px at 640 px "
-                             "(the paper states 92.8)"))
-        .param(param("baseline_m", 0.12).range(0.01, 2.0).with_unit("m").describe("distance between the cameras"))
-        .param(
-            param("min_depth_m", 0.5).range(0.05, 100.0).with_unit("m").describe("nearest depth the camera measures"))
-        .param(
-            param("max_depth_m", 15.0).range(0.1, 1000.0).with_unit("m").describe("farthest depth the camera measures"))
-        .param(param("noise_sigma", 1.5).range(0.0, 50.0).with_unit("grey levels").describe("Gaussian image noise"))
-        .param(param("color", false).describe("publish BGR images instead of 8-bit grey"))
-        .param(param("camera_position_m", std::vector<double>{0.0, 0.0, 2.0})
-                   .with_length(3)
-                   .with_unit("m")
-                   .describe("fixed camera position (world), when `pose` is not connected"))
-        .param(param("camera_yaw_deg", 0.0).range(-360.0, 360.0).with_unit("deg").describe("fixed camera heading"))
-        .param(param("camera_offset_m", std::vector<double>{0.1, 0.0, 0.0})
-                   .with_length(3)
-                   .with_unit("m")
-                   .describe("camera position in the vehicle's body frame, when `pose` is connected"))
-        .param(param("clutter_count", 12).range(0, 500).describe("trees and buildings in the background"))
-        .param(param("clutter_min_range_m", 12.0)
-                   .range(0.0, 500.0)
-                   .with_unit("m")
-                   .describe("clutter's nearest distance from the world origin"))
-        .param(
-            param("clutter_max_range_m", 40.0).range(0.0, 500.0).with_unit("m").describe("clutter's farthest distance"))
-        .param(param("scene_seed", 1)
-                   .at_least(0)
-                   .describe("lays out the world and its textures; the run seed drives the noise"));
+        .config(std::move(c));
   }
 
-  explicit SimStereo(NodeInit& init)
-      : noise_sigma_(init.param<double>("noise_sigma")),
-        color_(init.param<bool>("color")),
-        min_depth_(init.param<double>("min_depth_m")),
-        max_depth_(init.param<double>("max_depth_m")),
-        fixed_camera_(geometry::level_camera(init.param<Eigen::Vector3d>("camera_position_m"),
-                                             init.param<double>("camera_yaw_deg") * M_PI / 180.0)),
-        offset_(init.param<Eigen::Vector3d>("camera_offset_m")),
-        scene_(scene_options(init)),
-        renderer_(calibration(init)) {
-    if (min_depth_ >= max_depth_) throw Error("min_depth_m must be below max_depth_m");
-    calibration_ = calibration(init);
-    init.set_rate(init.param<double>("fps"));
-  }
+  explicit SimStereo(NodeInit& init) : SimStereo(init, init.config<SimStereoConfig>()) {}
 
   void tick(Context& ctx) override {
     const Time stamp = ctx.now();
@@ -117,23 +138,27 @@ class SimStereo final : public Node {
   }
 
  private:
-  static SceneOptions scene_options(NodeInit& init) {
-    SceneOptions o;
-    o.clutter_count = static_cast<int>(init.param<std::int64_t>("clutter_count"));
-    o.clutter_min_range_m = init.param<double>("clutter_min_range_m");
-    o.clutter_max_range_m = std::max(init.param<double>("clutter_max_range_m"), o.clutter_min_range_m);
-    o.seed = static_cast<std::uint64_t>(init.param<std::int64_t>("scene_seed"));
-    return o;
+  SimStereo(NodeInit& init, const SimStereoConfig& cfg)
+      : noise_sigma_(cfg.noise_sigma),
+        color_(cfg.color),
+        min_depth_(cfg.min_depth_m),
+        max_depth_(cfg.max_depth_m),
+        fixed_camera_(geometry::level_camera(cfg.camera_position_m, cfg.camera_yaw_deg * M_PI / 180.0)),
+        offset_(cfg.camera_offset_m),
+        scene_(cfg.scene),
+        calibration_(calibration(cfg)),
+        renderer_(calibration_) {
+    init.set_rate(cfg.fps);
   }
 
-  static msg::StereoCalibration calibration(NodeInit& init) {
+  static msg::StereoCalibration calibration(const SimStereoConfig& cfg) {
     msg::StereoCalibration c;
-    c.width = init.param<int>("width");
-    c.height = init.param<int>("height");
-    c.fx = c.fy = focal_from_hfov(c.width, init.param<double>("hfov_deg"));
+    c.width = cfg.width;
+    c.height = cfg.height;
+    c.fx = c.fy = focal_from_hfov(c.width, cfg.hfov_deg);
     c.cx = (c.width - 1) / 2.0;
     c.cy = (c.height - 1) / 2.0;
-    c.baseline_m = init.param<double>("baseline_m");
+    c.baseline_m = cfg.baseline_m;
     return c;
   }
 
@@ -175,8 +200,8 @@ class SimStereo final : public Node {
   geometry::CameraPose fixed_camera_;
   Eigen::Vector3d offset_;
   WorldScene scene_;
-  StereoRenderer renderer_;
   msg::StereoCalibration calibration_;
+  StereoRenderer renderer_;
   std::uint64_t frames_ = 0;
 };
 KESTREL_REGISTER_NODE(SimStereo)

@@ -55,4 +55,6 @@ TEST_P(OnError, ANodeThatCannotStartFailsTheRunBeforeItBegins) {
   EXPECT_EQ(node_stats(r, "src").messages_out, 0u);
 }
 
-INSTANTIATE_TEST_SUITE_P(Executors, OnError, ::testing::Values("lockstep", "realtime"));
+// Named after the executor: the realtime instances carry the CTest label `threads`.
+INSTANTIATE_TEST_SUITE_P(Executors, OnError, ::testing::Values("lockstep", "realtime"),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });

@@ -263,3 +263,83 @@ TEST(GraphValidation, MalformedStructuresGiveErrorsNotCrashes) {
     for (const auto& d : r.diagnostics.items()) EXPECT_EQ(d.where.file, "g.yaml") << doc;
   }
 }
+
+TEST(GraphValidation, ABrokenRuleIsReportedWhereAParameterItNamesIsSet) {
+  const char* yaml = R"(nodes:
+  - id: src
+    type: counter_source
+  - id: w
+    type: window
+    params:
+      low: 5
+      high: 2
+  - id: sink
+    type: collector
+connections:
+  - {from: src.out, to: w.in}
+  - {from: w.out, to: sink.in}
+)";
+  EXPECT_THAT(only_error(build(yaml)),
+              HasSubstr("g.yaml:7:12: error: node 'w' (window): low = 5, high = 2 break the rule 'low <= high'"));
+  // Each value is valid on its own; only the pair is wrong. A --set that mends it makes a valid graph,
+  // and one that breaks it is reported at the --set.
+  EXPECT_TRUE(build(yaml, {"w.low=1"}).graph);
+  std::string fine = yaml;
+  fine.replace(fine.find("high: 2"), 7, "high: 9");
+  EXPECT_TRUE(build(fine).graph);
+  EXPECT_THAT(only_error(build(fine, {"w.high=0"})), HasSubstr("--set w.high=0: error: node 'w' (window): low = 5, "
+                                                               "high = 0 break the rule 'low <= high'"));
+}
+
+TEST(GraphValidation, AComponentsRulesAreCheckedInPlace) {
+  const char* yaml = R"(nodes:
+  - id: src
+    type: counter_source
+  - id: s
+    type: shape
+    params:
+      shaper: {type: clamp, low: 3, high: 1}
+  - id: sink
+    type: collector
+connections:
+  - {from: src.out, to: s.in}
+  - {from: s.out, to: sink.in}
+)";
+  EXPECT_THAT(only_error(build(yaml)),
+              HasSubstr("g.yaml:7:34: error: node 's' (shape) shaper 'clamp': low = 3, high = 1 break the rule "
+                        "'low <= high'"));
+}
+
+TEST(GraphValidation, OverridesReachIntoComponents) {
+  const char* yaml = R"(nodes:
+  - id: src
+    type: counter_source
+  - id: s
+    type: shape
+  - id: sink
+    type: collector
+connections:
+  - {from: src.out, to: s.in}
+  - {from: s.out, to: sink.in}
+)";
+  // The default component (offset) with one of its parameters set from outside.
+  auto r = build(yaml, {"s.shaper.amount=5"});
+  ASSERT_TRUE(r.graph) << r.diagnostics.str();
+  const auto shaper = r.graph->nodes[1].params.get<ComponentConfig>("shaper");
+  EXPECT_EQ(shaper.type, "offset");
+  EXPECT_EQ(shaper.params->get<double>("amount"), 5.0);
+  // Another component, then its parameters; checked like the graph's own values.
+  r = build(yaml, {"s.shaper=clamp", "s.shaper.high=4"});
+  ASSERT_TRUE(r.graph) << r.diagnostics.str();
+  EXPECT_EQ(r.graph->nodes[1].params.get<ComponentConfig>("shaper").params->get<double>("high"), 4.0);
+  EXPECT_THAT(only_error(build(yaml, {"s.shaper=clamp", "s.shaper.high=-4"})),
+              HasSubstr("--set s.shaper.high=-4: error: node 's' (shape) shaper 'clamp': low = 0, high = -4 break the "
+                        "rule 'low <= high'"));
+  EXPECT_THAT(
+      only_error(build(yaml, {"s.shaper.amont=5"})),
+      HasSubstr("--set s.shaper.amont=5: error: node 's' (shape) shaper 'offset': unknown parameter 'amont' (did "
+                "you mean 'amount'?)"));
+  EXPECT_THAT(only_error(build(yaml, {"src.rate_hz.x=1"})),
+              HasSubstr("node 'src' (counter_source): parameter 'rate_hz' is not a component, so 'rate_hz.x' names "
+                        "nothing"));
+}

@@ -1,8 +1,10 @@
 // Parameter access, name suggestions and the duration histogram.
 #include <gmock/gmock.h>
 
+#include <Eigen/Core>
 #include <random>
 
+#include "kestrel/param_spec.hpp"
 #include "kestrel/params.hpp"
 #include "kestrel/runtime/diagnostics.hpp"
 #include "kestrel/runtime/histogram.hpp"

@@ -33,11 +33,15 @@ TEST(PluginLoading, GoodPluginRegistersItsTypes) {
   const auto& info = host.plugins().front();
   EXPECT_EQ(info.name, "test_nodes");
   EXPECT_THAT(info.node_types, ::testing::Contains("counter_source"));
-  EXPECT_THAT(info.messages, ::testing::UnorderedElementsAre("test.Number", "test.Blob"));
+  // Its own message types, and the framework's that its ports use: a plugin brings the message
+  // types it needs, the runtime registers none.
+  EXPECT_THAT(info.messages, ::testing::UnorderedElementsAre("test.Number", "test.Blob", "test.Counted",
+                                                             "kestrel.Detections", "kestrel.GroundTruth",
+                                                             "kestrel.Tracks"));
   const NodeType* relay = host.registry().find_node("relay");
   ASSERT_NE(relay, nullptr);
   EXPECT_EQ(relay->plugin, kGood.string());
-  EXPECT_EQ(relay->spec.inputs().at(0).type, "test.Number");
+  EXPECT_EQ(relay->spec.inputs().at(0).type(), "test.Number");
   // Loading the same file again is a no-op, not a duplicate registration.
   EXPECT_TRUE(host.load(kGood));
   EXPECT_EQ(host.plugins().size(), 1u);
@@ -98,6 +102,17 @@ TEST(PluginLoading, FailedRegistrationAddsNothing) {
   EXPECT_EQ(host.registry().find_node("fine_but_doomed"), nullptr);
 }
 
+TEST(PluginLoading, AMalformedSpecIsRefusedWithThePluginsName) {
+  PluginHost host;
+  EXPECT_FALSE(host.load(kBad / "malformed_spec.so"));
+  ASSERT_EQ(host.errors().size(), 1u);
+  const std::string& e = host.errors().front().message;
+  EXPECT_THAT(e, HasSubstr("malformed_spec.so failed to register: node type 'sloppy' has a malformed spec"));
+  EXPECT_THAT(e, HasSubstr("parameter 'gain': the default 5 is outside its range [0, 1]"));
+  EXPECT_THAT(e, HasSubstr("rule 'gain <= limit' names an undeclared parameter 'limit'"));
+  EXPECT_EQ(host.registry().find_node("sloppy"), nullptr);
+}
+
 TEST(PluginLoading, ADirectoryOfMixedFilesLoadsEveryGoodPlugin) {
   const fs::path dir = fs::temp_directory_path() / "kestrel-mixed-plugins";
   fs::remove_all(dir);
@@ -113,7 +128,7 @@ TEST(PluginLoading, ADirectoryOfMixedFilesLoadsEveryGoodPlugin) {
   EXPECT_THAT(loaded, ::testing::Contains("test_nodes"));
   // Every broken file is named in exactly one error.
   for (const char* name : {"not_a_plugin.so", "wrong_abi_major.so", "wrong_abi_tag.so", "missing_symbol.so",
-                           "duplicate_type.so", "failing_registration.so", "garbage.so"}) {
+                           "duplicate_type.so", "failing_registration.so", "malformed_spec.so", "garbage.so"}) {
     int mentions = 0;
     for (const auto& e : host.errors())
       if (e.file == dir / name) ++mentions;

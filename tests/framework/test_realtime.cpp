@@ -119,7 +119,11 @@ connections:
   EXPECT_EQ(received(r), 50u);
 }
 
-TEST(Realtime, DelayedFeedbackLoopRunsAndStops) {
+// sum_k = k + (latest b) with b = sum_j / 2 for the newest sum_j that has come back round the
+// loop, or 0 before the first one. On the wall clock which j that is depends on thread timing,
+// so each value is checked against the sums published before it: it must be k plus half of one
+// of them, the feedback must never go back in time, and it must have arrived at all.
+TEST(Realtime, DelayedFeedbackLoopComputesFromEarlierSums) {
   const auto r = run(R"(executor: realtime
 nodes:
   - {id: src, type: counter_source, params: {rate_hz: 100}}
@@ -127,12 +131,37 @@ nodes:
   - {id: half, type: scale, params: {factor: 0.5}}
   - {id: sink, type: collector}
 connections:
-  - {from: src.out, to: add.a}
-  - {from: add.sum, to: half.in}
+  - {from: src.out, to: add.a, policy: fifo 1000}
+  - {from: add.sum, to: half.in, policy: fifo 1000}
   - {from: half.out, to: add.b, delayed: true}
-  - {from: add.sum, to: sink.in}
+  - {from: add.sum, to: sink.in, policy: fifo 1000}
 duration: 0.3
 )");
   EXPECT_EQ(r.outcome, RunOutcome::completed);
-  EXPECT_GT(received(r), 10u);
+  const auto sums = r.report.at("sink").at("values").get<std::vector<double>>();
+  const auto indices = r.report.at("sink").at("indices").get<std::vector<std::int64_t>>();
+  ASSERT_GT(sums.size(), 10u);
+  // Every sum reached the sink, in order: one per source message.
+  EXPECT_EQ(sums.size(), node_stats(r, "src").messages_out);
+  ASSERT_EQ(indices.size(), sums.size());
+  for (std::size_t k = 0; k < indices.size(); ++k) ASSERT_EQ(indices[k], static_cast<std::int64_t>(k));
+
+  int previous = -1;  // index of the sum fed back last time; -1: none yet
+  std::size_t fed_back = 0;
+  for (std::size_t k = 0; k < sums.size(); ++k) {
+    const double b = sums[k] - static_cast<double>(k);
+    if (b == 0.0 && previous < 0) continue;  // nothing has come back yet (sums are >= k, so b > 0 after)
+    int j = -1;
+    for (std::size_t i = 0; i < k; ++i)
+      if (std::abs(b - 0.5 * sums[i]) <= 1e-9 * std::max(1.0, sums[i])) j = static_cast<int>(i);
+    ASSERT_GE(j, 0) << "sum " << k << " = " << sums[k] << " is not " << k << " + half of an earlier sum";
+    EXPECT_GE(j, previous) << "the feedback of sum " << k << " went back in time";
+    previous = j;
+    ++fed_back;
+  }
+  EXPECT_GT(fed_back, 0u) << "nothing came back round the loop";
+  // The loop takes microseconds and the source ticks every 10 ms: the feedback keeps up, so the
+  // last sums are built on recent ones, not on a value that stopped changing.
+  EXPECT_GE(previous, static_cast<int>(sums.size() / 2)) << "the feedback stopped following the sums";
+  EXPECT_DOUBLE_EQ(sums[0], 0.0);  // nothing to add before the first sum
 }

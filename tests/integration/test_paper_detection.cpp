@@ -1,8 +1,11 @@
 // A few seconds of the paper's detection graph: rendered stereo, SGBM, voxels, clusters and the
-// evaluator, end to end. Bounds are the paper's Table 1 where this configuration meets them
-// (recall, precision, X and Y error) and our measured Z error with margin (see docs).
+// evaluator, end to end. Bounds are the paper's Table 1 at 5 m where this configuration meets it
+// (recall, precision, X and Y error) and, for Z, the physical bound of half a pixel of disparity
+// (docs/perception.md explains why Z does not reach the paper's figure). Today's figures are
+// tracked by bench/paper_accuracy.cpp, not asserted here.
 #include <gmock/gmock.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -49,11 +52,17 @@ TEST(PaperDetection, FindsTheIntruderAtFiveMetres) {
   ASSERT_EQ(r.outcome, RunOutcome::completed) << (r.errors.empty() ? "" : r.errors.front());
   const auto& d = r.report.at("detection");
   EXPECT_EQ(d.at("frames"), 120);
-  EXPECT_GE(d.at("recall").get<double>(), 0.974);     // paper's lowest recall
-  EXPECT_GE(d.at("precision").get<double>(), 0.998);  // paper's lowest precision
-  EXPECT_LE(d.at("rmse_m").at("x").get<double>(), 0.10);
-  EXPECT_LE(d.at("rmse_m").at("y").get<double>(), 0.112);
-  EXPECT_LE(d.at("rmse_m").at("z").get<double>(), 0.30);
+  EXPECT_GE(d.at("recall").get<double>(), 0.974);          // paper's lowest recall
+  EXPECT_GE(d.at("precision").get<double>(), 0.998);       // paper's lowest precision
+  EXPECT_LE(d.at("rmse_m").at("x").get<double>(), 0.073);  // paper, 5 m
+  EXPECT_LE(d.at("rmse_m").at("y").get<double>(), 0.108);  // paper, 5 m
+  // Depth from disparity: Z = fx b / d, so one pixel of disparity is Z^2 / (fx b) of depth. A
+  // matcher worth its name is right to half a pixel: at 5 m with the graph's 92.8 degree field of
+  // view (fx = 320 / tan(46.4 deg) = 304 px) and b = 0.12 m, that is 0.34 m.
+  const double fx = 320.0 / std::tan(92.8 / 2 * M_PI / 180.0);
+  const double half_pixel_m = 0.5 * 5.0 * 5.0 / (fx * 0.12);
+  EXPECT_GT(d.at("rmse_m").at("z").get<double>(), 0.0);
+  EXPECT_LE(d.at("rmse_m").at("z").get<double>(), half_pixel_m);
   // Lockstep: detections are available at their capture time.
   EXPECT_NEAR(d.at("lag_s").get<double>(), 0.0, 0.034);
   // Something to look at.

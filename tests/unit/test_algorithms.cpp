@@ -9,6 +9,7 @@
 #include "kestrel/algorithms/assignment.hpp"
 #include "kestrel/algorithms/clear_mot.hpp"
 #include "kestrel/algorithms/lag.hpp"
+#include "kestrel/algorithms/mot_metrics.hpp"
 
 using namespace kestrel::algorithms;
 
@@ -68,6 +69,42 @@ TEST(Assignment, MatchesBruteForceOnRandomRectangularMatrices) {
     expect_consistent(a, cost, gate);
     EXPECT_EQ(a.pairs, expected.first) << cost;
     EXPECT_NEAR(a.total_cost, expected.second, 1e-9) << cost;
+  }
+}
+
+// Costs may be negative (a score to maximise, negated). The most pairs still come first: a very
+// negative pair must not win over two ordinary ones when taking it leaves a row unassignable.
+TEST(Assignment, NegativeCostsWithForbiddenPairs) {
+  Eigen::MatrixXd cost(2, 2);
+  cost << -10.0, 0.0, 0.0, kForbidden;
+  auto a = solve_assignment(cost);
+  EXPECT_EQ(a.pairs, 2);
+  EXPECT_THAT(a.row_to_col, ::testing::ElementsAre(1, 0));
+  EXPECT_DOUBLE_EQ(a.total_cost, 0.0);
+
+  // Rectangular, all allowed costs negative, NaN and infinity both forbidden.
+  Eigen::MatrixXd wide(2, 3);
+  wide << -1.0, -5.0, std::numeric_limits<double>::quiet_NaN(), kForbidden, -4.0, -2.0;
+  a = solve_assignment(wide);
+  EXPECT_EQ(a.pairs, 2);
+  EXPECT_THAT(a.row_to_col, ::testing::ElementsAre(1, 2));
+  EXPECT_DOUBLE_EQ(a.total_cost, -7.0);
+
+  // Against brute force on random matrices with mixed signs, forbidden pairs and gates.
+  std::mt19937_64 rng(11);
+  std::uniform_int_distribution<int> size(1, 6);
+  std::uniform_real_distribution<double> value(-3.0, 3.0);
+  std::bernoulli_distribution forbid(0.3);
+  for (int trial = 0; trial < 500; ++trial) {
+    Eigen::MatrixXd c(size(rng), size(rng));
+    for (int r = 0; r < c.rows(); ++r)
+      for (int k = 0; k < c.cols(); ++k) c(r, k) = forbid(rng) ? kForbidden : value(rng);
+    const double gate = trial % 3 == 0 ? std::numeric_limits<double>::infinity() : (trial % 3 == 1 ? 1.0 : -0.5);
+    const auto solved = solve_assignment(c, gate);
+    const auto expected = brute_force(c, gate);
+    expect_consistent(solved, c, gate);
+    EXPECT_EQ(solved.pairs, expected.first) << c;
+    EXPECT_NEAR(solved.total_cost, expected.second, 1e-9) << c;
   }
 }
 
@@ -175,4 +212,24 @@ TEST(ClearMot, CrossingTargetsSwapIdentitiesOnce) {
   EXPECT_EQ(s.fp, 0u);
   EXPECT_EQ(s.fn, 0u);
   EXPECT_DOUBLE_EQ(s.mota, 1.0 - 2.0 / 20.0);
+}
+
+// Every reported CLEAR-MOT key is described in metrics_meta, and only those.
+TEST(ClearMot, ReportKeysAndTheirMetaMatch) {
+  kestrel::algorithms::MotSummary s;
+  s.mota = 0.5;
+  s.motp = 0.25;
+  s.fragmentations = 3;
+  const auto json = kestrel::algorithms::mot_summary_json(s);
+  const auto meta = kestrel::algorithms::mot_summary_meta("tracking");
+  EXPECT_EQ(json.at("mota"), 0.5);
+  EXPECT_EQ(json.at("motp_m"), 0.25);
+  EXPECT_EQ(json.at("fragmentations"), 3);
+  EXPECT_EQ(json.size(), meta.size());
+  for (const auto& [key, value] : json.items()) EXPECT_TRUE(meta.contains("tracking." + key)) << key;
+  EXPECT_EQ(meta.at("tracking.mota").at("higher_is_better"), true);
+  EXPECT_EQ(meta.at("tracking.motp_m").at("unit"), "m");
+  EXPECT_EQ(meta.at("tracking.idsw").at("higher_is_better"), false);
+  EXPECT_FALSE(meta.at("tracking.partially_tracked").contains("higher_is_better"));
+  EXPECT_TRUE(kestrel::algorithms::mot_summary_meta("").contains("mota"));
 }

@@ -116,15 +116,16 @@ TEST(IntruderNode, PublishesTruthAtItsRateAndThePlotIsWritten) {
   std::filesystem::remove_all(dir);
   const std::string yaml = R"(nodes:
   - {id: intruder, type: intruder, params: {rate_hz: 30, distance_m: 7.5}}
-  - {id: plot, type: trajectory_plot, params: {output_dir: ")" +
-                           dir.string() + R"("}}
+  - {id: plot, type: trajectory_plot}
 connections:
   - {from: intruder.truth, to: plot.truth}
 duration: 2.0
 )";
   auto built = build_graph(GraphSource::from_string(yaml), host.registry());
   ASSERT_TRUE(built.graph) << built.diagnostics.str();
-  const auto r = run_graph(*built.graph, host.registry());
+  RunOptions options;
+  options.report_dir = dir;
+  const auto r = run_graph(*built.graph, host.registry(), options);
   EXPECT_EQ(r.outcome, RunOutcome::completed);
   EXPECT_EQ(r.nodes[0].messages_out, 60u);
   EXPECT_TRUE(std::filesystem::exists(dir / "trajectory.png"));

@@ -144,3 +144,37 @@ TEST(TrackingScorer, AnIntruderOutOfViewIsNeitherMissedNorFound) {
   EXPECT_EQ(s.selected_frames, 5u);
   EXPECT_NEAR(s.rmse, 0.1, 1e-12);
 }
+
+// skip_first_s: while the tracker settles, its false tracks, identity changes and misses are not
+// scored; from skip_first_s on (inclusive) every frame is.
+TEST(TrackingScorer, FramesCapturedBeforeSkipFirstAreNotScored) {
+  TrackingScorer scorer(1.0, /*skip_first_s=*/0.5);
+  for (int k = 0; k < 10; ++k) {
+    msg::GroundTruth truth;
+    truth.stamp = from_seconds(0.1 * k);
+    truth.objects = {object_at(1, 0.0)};
+    msg::Tracks tracks;
+    tracks.stamp = truth.stamp;
+    if (k < 5) {
+      // Settling: a new identity every frame, a false track far away, and a miss at k = 4.
+      if (k < 4) tracks.items = {track_at(100 + k, 0.5), track_at(50, 9.0)};
+      if (!tracks.items.empty()) tracks.selected_id = tracks.items.back().id;
+    } else {
+      tracks.items = {track_at(7, 0.25)};
+      tracks.selected_id = 7;
+    }
+    EXPECT_EQ(scorer.add_frame(tracks, truth, 0.1 * k), k >= 5) << k;
+  }
+  const auto s = scorer.summary();
+  EXPECT_EQ(s.mot.frames, 5u);
+  EXPECT_EQ(s.mot.objects, 5u);
+  EXPECT_EQ(s.mot.fp, 0u);
+  EXPECT_EQ(s.mot.fn, 0u);
+  EXPECT_EQ(s.mot.idsw, 0u);
+  EXPECT_DOUBLE_EQ(s.mot.mota, 1.0);
+  EXPECT_EQ(s.selected_frames, 5u);
+  EXPECT_NEAR(s.rmse, 0.25, 1e-12);
+  EXPECT_EQ(s.target.frames, 5u);
+  EXPECT_EQ(s.target.on, 5u);
+  EXPECT_EQ(s.target.off + s.target.missing + s.target.switches, 0u);
+}

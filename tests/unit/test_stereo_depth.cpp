@@ -50,6 +50,33 @@ TEST(Reprojection, KnownDisparityGivesEquationOne) {
   EXPECT_NEAR((*cloud)[1].z, 452.0 * 0.12 / 10.0, 1e-5);
 }
 
+// Non-square pixels (fx != fy): disparity is measured along x, so depth takes fx, and a pixel's
+// row offset becomes metres through fy. Points placed in front of the camera and projected with
+// the pinhole model come back where they were.
+TEST(Reprojection, NonSquarePixelsUseFyForTheRows) {
+  msg::StereoCalibration c = calibration();
+  c.fx = 400.0;
+  c.fy = 300.0;
+  const std::vector<Eigen::Vector3d> points = {{0.6, -0.48, 4.8}, {-0.96, 0.72, 2.4}};
+  cv::Mat disparity(480, 640, CV_16S, cv::Scalar(-16));
+  for (const auto& p : points) {
+    const double u = c.cx + c.fx * p.x() / p.z(), v = c.cy + c.fy * p.y() / p.z();
+    const double d = c.fx * c.baseline_m / p.z();
+    ASSERT_DOUBLE_EQ(u, std::round(u));
+    ASSERT_DOUBLE_EQ(v, std::round(v));
+    disparity.at<short>(static_cast<int>(v), static_cast<int>(u)) = static_cast<short>(std::lround(16 * d));
+  }
+  const auto cloud = reproject(disparity, c, 0.5, 15.0);
+  ASSERT_EQ(cloud->size(), 2u);
+  // The cloud is in row order: the second point (v = 330) comes after the first (v = 210).
+  for (std::size_t i = 0; i < 2; ++i) {
+    const Eigen::Vector3d& p = points[i];
+    EXPECT_NEAR((*cloud)[i].x, p.x(), 1e-6) << i;
+    EXPECT_NEAR((*cloud)[i].y, p.y(), 1e-6) << i;
+    EXPECT_NEAR((*cloud)[i].z, p.z(), 1e-5) << i;
+  }
+}
+
 TEST(Reprojection, DepthLimitsAndStep) {
   cv::Mat disparity(4, 4, CV_16S, cv::Scalar(16 * 54));  // Z = 1.0044 m
   EXPECT_EQ(reproject(disparity, calibration(), 0.5, 15.0)->size(), 16u);

@@ -1,12 +1,17 @@
-// The constant-acceleration Kalman filter, the associators and track management, against
-// hand-computed values, the continuous-time model and brute force.
+// The constant-acceleration Kalman filter, the associators, the track-management components and
+// the tracking loop, against hand-computed values, the continuous-time model and brute force.
 #include <gmock/gmock.h>
 
 #include <functional>
 #include <random>
 
 #include "associators.hpp"
+#include "kestrel/error.hpp"
 #include "kestrel/tracking/constant_acceleration.hpp"
+#include "kestrel/tracking/deleter.hpp"
+#include "kestrel/tracking/initiator.hpp"
+#include "kestrel/tracking/kalman_filter.hpp"
+#include "kestrel/tracking/selector.hpp"
 #include "kestrel/tracking/track_manager.hpp"
 
 using namespace kestrel;
@@ -137,9 +142,8 @@ TEST(Associators, HungarianMatchesBruteForceOnRandomScenes) {
   }
 }
 
-TEST(Associators, RectangularInfeasibleAndGreedyCases) {
+TEST(Associators, RectangularAndInfeasibleCases) {
   const HungarianAssociator hungarian(Metric::euclidean, 1.0);
-  const GreedyAssociator greedy(Metric::euclidean, 1.0);
   // More detections than tracks; one detection beyond every gate.
   auto a = hungarian.associate(at({{0, 0, 5}}), {{3, 0, 5}, {0.2, 0, 5}, {0.5, 0, 5}});
   EXPECT_THAT(a.row_to_col, ::testing::ElementsAre(1));
@@ -147,16 +151,37 @@ TEST(Associators, RectangularInfeasibleAndGreedyCases) {
   a = hungarian.associate(at({{0, 0, 5}, {1, 1, 5}}), {{5, 5, 5}});
   EXPECT_EQ(a.pairs, 0);
   EXPECT_TRUE(hungarian.associate({}, {{0, 0, 0}}).row_to_col.empty());
-  // Greedy takes the closest pair first and loses the second match the optimum keeps.
+  EXPECT_TRUE(GreedyAssociator(Metric::euclidean, 1.0).associate(at({{0, 0, 5}}), {}).row_to_col[0] < 0);
+}
+
+// Track 1 is 0.4 m from detection 0 and 0.9 m from detection 1; track 0 has detection 0 alone
+// within its gate (0.5 m; detection 1 is 1.8 m away). Greedy takes the closest pair first,
+// (track 1, detection 0), and leaves track 0 with nothing; the optimum pairs both tracks.
+TEST(Associators, GreedyLosesAMatchThatHungarianMakes) {
   const auto tracks = at({{0, 0, 5}, {0.9, 0, 5}});
-  const std::vector<Eigen::Vector3d> detections = {{0.5, 0, 5}, {-0.6, 0, 5}};
-  EXPECT_EQ(hungarian.associate(tracks, detections).pairs, 2);
-  const auto g = greedy.associate(tracks, detections);
-  EXPECT_EQ(g.pairs, 2);  // greedy: (t1, d0) at 0.4, then (t0, d1) at 0.6
-  EXPECT_THAT(g.row_to_col, ::testing::ElementsAre(1, 0));
-  const auto tight = GreedyAssociator(Metric::euclidean, 0.55).associate(tracks, detections);
-  EXPECT_EQ(tight.pairs, 1);
-  EXPECT_EQ(HungarianAssociator(Metric::euclidean, 0.55).associate(tracks, detections).pairs, 1);
+  const std::vector<Eigen::Vector3d> detections = {{0.5, 0, 5}, {1.8, 0, 5}};
+  const auto optimal = HungarianAssociator(Metric::euclidean, 1.0).associate(tracks, detections);
+  EXPECT_EQ(optimal.pairs, 2);
+  EXPECT_THAT(optimal.row_to_col, ::testing::ElementsAre(0, 1));
+  EXPECT_NEAR(optimal.total_cost, 0.5 + 0.9, 1e-12);
+  const auto greedy = GreedyAssociator(Metric::euclidean, 1.0).associate(tracks, detections);
+  EXPECT_EQ(greedy.pairs, 1);
+  EXPECT_THAT(greedy.row_to_col, ::testing::ElementsAre(-1, 0));
+  EXPECT_THAT(greedy.col_to_row, ::testing::ElementsAre(1, -1));
+  EXPECT_NEAR(greedy.total_cost, 0.4, 1e-12);
+}
+
+// Both pair every track, but greedy's first, closest pair (track 0, detection 0: 1.0 m) forces
+// the expensive (track 1, detection 1: 4.1 m); the optimum crosses them for 2.0 + 1.1 m.
+TEST(Associators, GreedyPaysMoreThanHungarianForTheSamePairs) {
+  const auto tracks = at({{0, 0, 5}, {2.1, 0, 5}});
+  const std::vector<Eigen::Vector3d> detections = {{1.0, 0, 5}, {-2.0, 0, 5}};
+  const auto optimal = HungarianAssociator(Metric::euclidean, 5.0).associate(tracks, detections);
+  EXPECT_THAT(optimal.row_to_col, ::testing::ElementsAre(1, 0));
+  EXPECT_NEAR(optimal.total_cost, 3.1, 1e-12);
+  const auto greedy = GreedyAssociator(Metric::euclidean, 5.0).associate(tracks, detections);
+  EXPECT_THAT(greedy.row_to_col, ::testing::ElementsAre(0, 1));
+  EXPECT_NEAR(greedy.total_cost, 5.1, 1e-12);
 }
 
 TEST(Associators, MahalanobisUsesTheInnovationCovariance) {
@@ -169,27 +194,42 @@ TEST(Associators, MahalanobisUsesTheInnovationCovariance) {
 
 namespace {
 
-class FixedFilter final : public TrackFilter {  // the last detection is the estimate
+// A filter whose estimate is the last detection, with a covariance the test chooses.
+class FixedFilter final : public TrackFilter {
  public:
-  explicit FixedFilter(const Eigen::Vector3d& z) : p_(z) {}
+  explicit FixedFilter(const Eigen::Vector3d& z, double variance = 1.0) : p_(z), variance_(variance) {}
   void predict(double) override {}
   void update(const Eigen::Vector3d& z) override { p_ = z; }
   PredictedMeasurement predicted_measurement() const override { return {p_, Eigen::Matrix3d::Identity()}; }
   Eigen::VectorXd state() const override { return p_; }
-  Eigen::MatrixXd covariance() const override { return Eigen::Matrix3d::Identity(); }
+  Eigen::MatrixXd covariance() const override { return variance_ * Eigen::Matrix3d::Identity(); }
 
  private:
   Eigen::Vector3d p_;
+  double variance_;
 };
 
-TrackManager manager(int max_misses, Selection selection = Selection::longest_living) {
-  return TrackManager(
-      std::make_shared<HungarianAssociator>(Metric::euclidean, 1.0),
-      [](const Eigen::Vector3d& z) { return std::make_unique<FixedFilter>(z); },
-      TrackManagerOptions{max_misses, selection});
+class FixedFilters final : public Filter {
+ public:
+  std::unique_ptr<TrackFilter> start(const Eigen::Vector3d& z) override { return std::make_unique<FixedFilter>(z); }
+};
+
+TrackManager manager(int max_misses,
+                     std::shared_ptr<const Selector> selector = std::make_shared<LongestLivingSelector>(),
+                     int confirm_hits = 1) {
+  return TrackManager(TrackerParts{
+      std::make_shared<FixedFilters>(), std::make_shared<HungarianAssociator>(Metric::euclidean, 1.0),
+      std::make_shared<ConsecutiveHitsInitiator>(ConsecutiveHitsConfig{confirm_hits}),
+      std::make_shared<ConsecutiveMissesDeleter>(ConsecutiveMissesConfig{max_misses}), std::move(selector)});
 }
 
 Time frame(int k) { return from_seconds(k / 30.0); }
+
+std::vector<std::uint64_t> ids(const msg::Tracks& tracks) {
+  std::vector<std::uint64_t> out;
+  for (const auto& t : tracks.items) out.push_back(t.id);
+  return out;
+}
 
 }  // namespace
 
@@ -218,13 +258,14 @@ TEST(TrackManager, BirthDeathAndTheLongestLivingTarget) {
   out = m.step(frame(7), {});
   EXPECT_TRUE(out.items.empty());
   EXPECT_FALSE(out.selected_id);
+  EXPECT_EQ(m.counts().frames, 8u);
+  EXPECT_EQ(m.counts().empty_frames, 3u);
+  EXPECT_EQ(m.counts().tracks_started, 2u);
+  EXPECT_EQ(m.counts().target_coasted_frames, 2u);  // frames 5 and 6: the target had no detection
 }
 
 TEST(TrackManager, TentativeTracksAreNotPublishedUntilConfirmed) {
-  TrackManager m(
-      std::make_shared<HungarianAssociator>(Metric::euclidean, 1.0),
-      [](const Eigen::Vector3d& z) { return std::make_unique<FixedFilter>(z); },
-      TrackManagerOptions{2, Selection::longest_living, 3});
+  auto m = manager(2, std::make_shared<LongestLivingSelector>(), 3);
   // A one-frame false alarm at (3, 0, 5) never shows; the real target appears at its third hit.
   EXPECT_TRUE(m.step(frame(0), {{0, 0, 5}, {3, 0, 5}}).items.empty());
   EXPECT_TRUE(m.step(frame(1), {{0, 0, 5}}).items.empty());
@@ -244,13 +285,169 @@ TEST(TrackManager, TentativeTracksAreNotPublishedUntilConfirmed) {
   out = m.step(frame(10), {});
   ASSERT_EQ(out.items.size(), 1u);
   EXPECT_EQ(out.items[0].misses, 2);
+  EXPECT_EQ(m.counts().tracks_confirmed, 1u);
 }
 
-TEST(TrackManager, SelectionRules) {
-  auto nearest = manager(5, Selection::nearest);
-  nearest.step(frame(0), {{0, 0, 8}});
-  const auto out = nearest.step(frame(1), {{0, 0, 8}, {0, 0, 3}});
-  EXPECT_EQ(*out.selected_id, 2u);
-  EXPECT_EQ(parse_selection("most_hits"), Selection::most_hits);
-  EXPECT_THROW(parse_selection("loudest"), Error);
+// Track 1 is born first but coasts three frames; track 2, born a frame later, is hit every frame.
+// The oldest is 1, the most hit is 2.
+TEST(TrackManager, MostHitsSelectsTheTrackWithMostDetectionsNotTheOldest) {
+  auto longest = manager(5);
+  auto most_hits = manager(5, std::make_shared<MostHitsSelector>());
+  const Eigen::Vector3d a(0, 0, 5), b(2, 0, 5);
+  const std::vector<std::vector<Eigen::Vector3d>> frames = {{a}, {b}, {b}, {b}, {a, b}, {a, b}};
+  msg::Tracks by_age, by_hits;
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    by_age = longest.step(frame(static_cast<int>(k)), frames[k]);
+    by_hits = most_hits.step(frame(static_cast<int>(k)), frames[k]);
+  }
+  ASSERT_THAT(ids(by_hits), ::testing::ElementsAre(1u, 2u));
+  EXPECT_EQ(by_hits.items[0].age, 6);
+  EXPECT_EQ(by_hits.items[0].hits, 3);
+  EXPECT_EQ(by_hits.items[1].age, 5);
+  EXPECT_EQ(by_hits.items[1].hits, 5);
+  EXPECT_EQ(*by_age.selected_id, 1u);
+  EXPECT_EQ(*by_hits.selected_id, 2u);
+}
+
+TEST(TrackManager, DetectionsGoingBackInTimeAreRefusedAndChangeNothing) {
+  auto m = manager(2);
+  m.step(frame(3), {{0, 0, 5}});
+  try {
+    m.step(frame(2), {{0, 0, 5}});
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("detections went back in time"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("0.066667 s came after one at 0.100000 s"));
+  }
+  EXPECT_EQ(m.counts().frames, 1u);
+  const auto out = m.step(frame(4), {{0, 0, 5}});  // the next frame in order is tracked as usual
+  ASSERT_EQ(out.items.size(), 1u);
+  EXPECT_EQ(out.items[0].hits, 2);
+  // The same stamp twice is not going back: no prediction, one more update.
+  EXPECT_EQ(m.step(frame(4), {{0, 0, 5}}).items[0].hits, 3);
+}
+
+TEST(TrackManager, EveryPartIsRequired) {
+  TrackerParts parts{std::make_shared<FixedFilters>(), std::make_shared<HungarianAssociator>(Metric::euclidean, 1.0),
+                     std::make_shared<ConsecutiveHitsInitiator>(ConsecutiveHitsConfig{}),
+                     std::make_shared<ConsecutiveMissesDeleter>(ConsecutiveMissesConfig{}),
+                     std::make_shared<LongestLivingSelector>()};
+  EXPECT_NO_THROW(TrackManager{parts});
+  auto without = parts;
+  without.selector = nullptr;
+  EXPECT_THROW(TrackManager{without}, Error);
+  without = parts;
+  without.filter = nullptr;
+  EXPECT_THROW(TrackManager{without}, Error);
+}
+
+// The tracker with the Kalman filter component on a target whose path is known: a straight line
+// at constant velocity, detected exactly at 30 Hz. The loop must give exactly the filter a hand
+// run of the constant-acceleration Kalman filter gives, and the estimate must reach the truth.
+TEST(TrackManager, KalmanTrackerFollowsAConstantVelocityTargetExactly) {
+  const KalmanConfig config{1.0, 0.5, 1.0};
+  TrackManager m(TrackerParts{std::make_shared<KalmanFilter>(config),
+                              std::make_shared<HungarianAssociator>(Metric::euclidean, 1.0),
+                              std::make_shared<ConsecutiveHitsInitiator>(ConsecutiveHitsConfig{}),
+                              std::make_shared<ConsecutiveMissesDeleter>(ConsecutiveMissesConfig{}),
+                              std::make_shared<LongestLivingSelector>()});
+  auto truth = [](int k) { return Eigen::Vector3d(-1.0 + 0.8 * k / 30.0, 0.5 - 0.3 * k / 30.0, 5.0); };
+  auto by_hand = ConstantAccelerationKalman::start(truth(0), config.p);
+  msg::Tracks out = m.step(frame(0), {truth(0)});
+  for (int k = 1; k <= 150; ++k) {
+    out = m.step(frame(k), {truth(k)});
+    by_hand.predict(to_seconds(frame(k) - frame(k - 1)), config.q);
+    by_hand.update(truth(k), config.r);
+  }
+  ASSERT_THAT(ids(out), ::testing::ElementsAre(1u));
+  EXPECT_EQ(*out.selected_id, 1u);
+  EXPECT_EQ(out.items[0].hits, 151);
+  EXPECT_EQ(Eigen::VectorXd(out.items[0].state), Eigen::VectorXd(by_hand.x));
+  EXPECT_EQ(Eigen::MatrixXd(out.items[0].covariance), Eigen::MatrixXd(by_hand.P));
+  const auto& x = out.items[0].state;
+  EXPECT_LT((x.head<3>() - truth(150)).norm(), 1e-3);
+  EXPECT_LT((x.segment<3>(3) - Eigen::Vector3d(0.8, -0.3, 0.0)).norm(), 1e-2);
+  EXPECT_LT(x.tail<3>().norm(), 1e-2);
+}
+
+// ---- The components, each on a case whose answer is known.
+
+TEST(Initiator, ConsecutiveHitsStartsATrackPerUnclaimedDetectionAndConfirmsAtTheNthHit) {
+  const ConsecutiveHitsInitiator three(ConsecutiveHitsConfig{3});
+  const std::vector<Eigen::Vector3d> detections = {{0, 0, 5}, {1, 0, 5}, {2, 0, 5}};
+  EXPECT_THAT(three.initiate(detections, {0, 2}), ::testing::ElementsAre(0u, 2u));
+  EXPECT_TRUE(three.initiate(detections, {}).empty());
+  TrackStatus t;
+  t.hits = 2;
+  EXPECT_FALSE(three.confirms(t));
+  t.hits = 3;
+  EXPECT_TRUE(three.confirms(t));
+  EXPECT_FALSE(three.drops(t));
+  t.misses = 1;
+  EXPECT_TRUE(three.drops(t));  // a tentative track dies at its first miss
+  t.hits = 1;
+  t.misses = 0;
+  EXPECT_TRUE(ConsecutiveHitsInitiator(ConsecutiveHitsConfig{1}).confirms(t));  // the paper: at birth
+}
+
+TEST(Deleter, ConsecutiveMissesDeletesAtTheMissAfterMaxMisses) {
+  const ConsecutiveMissesDeleter deleter(ConsecutiveMissesConfig{10});
+  TrackStatus t;
+  t.confirmed = true;
+  t.misses = 10;
+  EXPECT_FALSE(deleter.deletes(t));
+  t.misses = 11;
+  EXPECT_TRUE(deleter.deletes(t));
+  t.misses = 1;
+  EXPECT_TRUE(ConsecutiveMissesDeleter(ConsecutiveMissesConfig{0}).deletes(t));
+}
+
+namespace {
+
+// Three confirmed tracks: 1 is the oldest, 2 has the most hits, 3 is the nearest and the most
+// certain.
+struct Candidates {
+  FixedFilter far{{0, 0, 9}, 4.0}, mid{{0, 0, 6}, 2.0}, near{{0, 0, 3}, 0.5};
+  std::vector<TrackStatus> tracks{{1, 30, 12, 3, true, &far}, {2, 20, 20, 0, true, &mid}, {3, 10, 10, 0, true, &near}};
+};
+
+}  // namespace
+
+TEST(Selector, EachRuleOnAKnownCase) {
+  const Candidates c;
+  EXPECT_EQ(*LongestLivingSelector().select(c.tracks), 1u);
+  EXPECT_EQ(*MostHitsSelector().select(c.tracks), 2u);
+  EXPECT_EQ(*NearestSelector().select(c.tracks), 3u);
+  EXPECT_EQ(*MostConfidentSelector().select(c.tracks), 3u);
+  // Most confident is not nearest: make the near track uncertain.
+  FixedFilter uncertain_near({0, 0, 3}, 9.0);
+  auto tracks = c.tracks;
+  tracks[2].filter = &uncertain_near;
+  EXPECT_EQ(*NearestSelector().select(tracks), 3u);
+  EXPECT_EQ(*MostConfidentSelector().select(tracks), 2u);
+  EXPECT_FALSE(LongestLivingSelector().select({}));
+}
+
+// The documented tie rule: equal scores go to the track that comes first, the oldest.
+TEST(Selector, TiesGoToTheOldestTrack) {
+  FixedFilter a({0, 0, 5}, 1.0), b({0, 5, 0}, 1.0), c({3, 0, 4}, 1.0);  // all 5 m away, same covariance
+  const std::vector<TrackStatus> tied{{4, 7, 7, 0, true, &a}, {6, 7, 7, 0, true, &b}, {9, 7, 7, 0, true, &c}};
+  for (const auto& selector : std::vector<std::shared_ptr<const Selector>>{
+           std::make_shared<LongestLivingSelector>(), std::make_shared<MostHitsSelector>(),
+           std::make_shared<NearestSelector>(), std::make_shared<MostConfidentSelector>()})
+    EXPECT_EQ(*selector->select(tied), 4u);
+  // In the loop: two tracks born in one frame and hit in every frame tie on every rule.
+  auto m = manager(5, std::make_shared<MostHitsSelector>());
+  msg::Tracks out;
+  for (int k = 0; k < 4; ++k) out = m.step(frame(k), {{0, 0, 5}, {3, 0, 4}});
+  ASSERT_THAT(ids(out), ::testing::ElementsAre(1u, 2u));
+  EXPECT_EQ(*out.selected_id, 1u);
+}
+
+TEST(Selector, TheDeprecatedSelectionNamesMapToTheComponents) {
+  const Candidates c;
+  EXPECT_EQ(*make_selector(Selection::longest_living)->select(c.tracks), 1u);
+  EXPECT_EQ(*make_selector(Selection::most_hits)->select(c.tracks), 2u);
+  EXPECT_EQ(*make_selector(Selection::nearest)->select(c.tracks), 3u);
+  EXPECT_EQ(selection_choices().size(), 3u);
 }

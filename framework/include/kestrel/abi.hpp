@@ -18,4 +18,5 @@
 #define KESTREL_STDLIB_TAG "unknown-stdlib"
 #endif
 
-#define KESTREL_ABI_TAG "c++" KESTREL_STRINGIFY(__cplusplus) "/" KESTREL_STDLIB_TAG "/api-" KESTREL_API_HASH
+#define KESTREL_ABI_TAG \
+  "c++" KESTREL_STRINGIFY(__cplusplus) "/" KESTREL_STDLIB_TAG "/abi-" KESTREL_ABI_VERSION "/api-" KESTREL_API_HASH

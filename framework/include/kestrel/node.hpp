@@ -1,21 +1,27 @@
 #pragma once
 // What a plugin author implements: a Node, built from a NodeInit, called with a Context.
 //
+//   struct DoublerConfig {
+//     double factor = 2.0;
+//   };
 //   class Doubler final : public kestrel::Node {
 //    public:
 //     static constexpr kestrel::Input<Number> kIn{"in"};
 //     static constexpr kestrel::Output<Number> kOut{"out"};
 //     static kestrel::NodeSpec spec() {
+//       kestrel::ConfigSpec<DoublerConfig> c;
+//       c.param("factor", &DoublerConfig::factor).range(-10.0, 10.0).describe("multiplier");
 //       return kestrel::NodeSpec("doubler", "Multiplies each number by a factor")
 //           .input(kIn, "numbers").output(kOut, "scaled numbers")
-//           .param(kestrel::param("factor", 2.0).describe("multiplier"));
+//           .config(std::move(c));
 //     }
-//     explicit Doubler(kestrel::NodeInit& init) : factor_(init.param<double>("factor")) {}
+//     explicit Doubler(kestrel::NodeInit& init) : cfg_(init.config<DoublerConfig>()) {}
 //     void process(kestrel::Context& ctx) override {
-//       ctx.publish(kOut, Number{ctx.get(kIn)->value * factor_});
+//       auto in = ctx.get(kIn);
+//       ctx.publish(kOut, Number{in->stamp, in->value * cfg_.factor});
 //     }
 //    private:
-//     double factor_;
+//     DoublerConfig cfg_;
 //   };
 //   KESTREL_REGISTER_NODE(Doubler)
 #include <cstdint>
@@ -25,6 +31,7 @@
 #include <string>
 #include <string_view>
 
+#include "kestrel/component.hpp"
 #include "kestrel/error.hpp"
 #include "kestrel/logger.hpp"
 #include "kestrel/message.hpp"
@@ -58,26 +65,14 @@ class Node {
 
 /// What a node's constructor gets: its identity, its validated parameters, and the means to
 /// build its components and to ask for a timer.
-class NodeInit {
+class NodeInit : public InitBase {
  public:
   NodeInit(std::string id, const NodeSpec& spec, const Params& params, const Registry& registry, std::uint64_t seed,
            Logger& log)
-      : id_(std::move(id)), spec_(spec), params_(params), registry_(registry), seed_(seed), log_(log) {}
+      : InitBase(id, spec.param_set(), params, registry, seed, log), spec_(spec) {}
 
-  const std::string& id() const { return id_; }
+  const std::string& id() const { return name(); }
   const NodeSpec& spec() const { return spec_; }
-  const Params& params() const { return params_; }
-  template <class T>
-  T param(const std::string& name) const {
-    return params_.get<T>(name);
-  }
-
-  /// Builds the component named by component parameter `param_name`. Interface must declare
-  /// `static constexpr std::string_view kKind` matching the parameter's kind.
-  template <class Interface>
-  std::shared_ptr<Interface> make_component(const std::string& param_name) const {
-    return std::static_pointer_cast<Interface>(make_component_erased(param_name, Interface::kKind));
-  }
 
   /// Asks for tick() `hz` times a second, from time zero. Sources use this. Tick k falls at
   /// round(k / hz) on the run clock, so 30 Hz gives exactly 600 ticks in 20 s.
@@ -87,20 +82,8 @@ class NodeInit {
   /// Nanoseconds between ticks; 0 if the node has no timer.
   double tick_interval_ns() const { return tick_interval_ns_; }
 
-  /// A seed derived from the run's seed and this node's id: stable across runs and distinct
-  /// between nodes.
-  std::uint64_t seed() const { return seed_; }
-  Logger& log() const { return log_; }
-
  private:
-  std::shared_ptr<void> make_component_erased(const std::string& param_name, std::string_view kind) const;
-
-  std::string id_;
   const NodeSpec& spec_;
-  const Params& params_;
-  const Registry& registry_;
-  std::uint64_t seed_;
-  Logger& log_;
   double tick_interval_ns_ = 0.0;
 };
 
@@ -144,7 +127,17 @@ class Context {
   std::mt19937_64& rng();
   /// The run report. Sections set here are owned by this node.
   void set_report_section(const std::string& key, nlohmann::json value, std::string markdown = {});
-  const std::filesystem::path& artifact_dir() const;
+  /// Says how to read a metric of this node's sections: `path` is its dotted key in report.json
+  /// ("detection.recall"). sweep, ab and plot compare runs with it.
+  void describe_metric(const std::string& path, std::string unit, bool higher_is_better, bool by_magnitude = false);
+  /// Says a metric has a unit but no better direction (a count of frames or of objects): report.json
+  /// gives its unit and no "higher_is_better", and sweep and ab give it no verdict.
+  void describe_quantity(const std::string& path, std::string unit = {});
+  /// True when the run keeps a report folder, so that artifacts are worth preparing.
+  bool keeps_artifacts() const;
+  /// Adds a file to the run report (a PNG is shown in report.md): the runtime writes it, checks
+  /// the write and lists it. Ignored when the run keeps no report folder.
+  void add_artifact(const std::string& file_name, std::string_view bytes, std::string caption = {});
 
   /// A source says it has nothing more to publish; it gets no more ticks. The run ends when every
   /// source has ended (or at its duration).

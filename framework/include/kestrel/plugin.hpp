@@ -40,8 +40,12 @@ void register_node(Registry& r) {
 template <class Interface, class C>
 void register_component(Registry& r) {
   static_assert(std::is_base_of_v<Interface, C>, "a component must derive from its interface");
-  r.add_component(std::string(Interface::kKind), C::spec(), [](const Params& p) -> std::shared_ptr<void> {
-    std::shared_ptr<Interface> as_interface = std::make_shared<C>(p);
+  r.add_component(std::string(Interface::kKind), C::spec(), [](const ComponentInit& init) -> std::shared_ptr<void> {
+    std::shared_ptr<Interface> as_interface;
+    if constexpr (std::is_constructible_v<C, const ComponentInit&>)
+      as_interface = std::make_shared<C>(init);
+    else
+      as_interface = std::make_shared<C>(init.params());  // a component that needs only its parameters
     return std::static_pointer_cast<void>(as_interface);
   });
 }

@@ -40,10 +40,13 @@ struct InputOptions {
 /// A port as the registry, the validator and `kestrel inspect` see it.
 struct PortSpec {
   std::string name;
-  std::string type;  ///< message type name; "*" accepts any type
+  MessageInfo message;  ///< the message type: name ("*" accepts any type) and description
   std::string description;
   Trigger trigger = Trigger::on_message;
   bool optional = false;
+
+  /// The message type's name, as graphs and errors show it.
+  const std::string& type() const { return message.name; }
 };
 
 }  // namespace kestrel

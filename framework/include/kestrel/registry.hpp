@@ -16,7 +16,7 @@ namespace kestrel {
 
 using NodeFactory = std::function<std::unique_ptr<Node>(NodeInit&)>;
 /// Returns the component as a pointer to its interface type, erased to void.
-using ComponentFactory = std::function<std::shared_ptr<void>(const Params&)>;
+using ComponentFactory = std::function<std::shared_ptr<void>(const ComponentInit&)>;
 
 struct NodeType {
   NodeSpec spec;
@@ -38,11 +38,13 @@ struct MessageTypeEntry {
 
 class Registry {
  public:
-  /// Registers the core message types of the framework.
+  /// Knows only the wildcard message type: every other type comes with the plugins that use it.
   Registry();
 
-  /// Throws kestrel::Error if the type name is taken, naming both plugins.
+  /// Registers a node type and the message types of its ports. Throws kestrel::Error if the
+  /// type name is taken (naming both plugins) or if its spec is malformed (see check_param_set).
   void add_node(NodeSpec spec, NodeFactory factory);
+  /// The same for a component of `kind`.
   void add_component(std::string kind, ComponentSpec spec, ComponentFactory factory);
   /// Registering the same message name twice is allowed (plugins share headers); the first wins.
   void add_message(MessageInfo info);

@@ -6,9 +6,28 @@
 #include <map>
 #include <mutex>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace kestrel {
+
+/// How to read one metric: its unit, and which way is better (none for a count that is neither
+/// good nor bad, such as the number of frames scored). `by_magnitude`: smaller |value| is better
+/// whatever the sign (a lag, a bias).
+struct MetricMeta {
+  std::string unit;
+  std::optional<bool> higher_is_better = true;
+  bool by_magnitude = false;
+};
+
+/// A file that belongs to the report: a plot, a snapshot, a table.
+struct Artifact {
+  std::string file;  ///< name inside the report folder
+  std::string owner;
+  std::string caption;
+};
 
 class Report {
  public:
@@ -17,9 +36,16 @@ class Report {
   /// owned by one node only; a second owner is an error.
   void set_section(const std::string& owner, const std::string& key, nlohmann::json value, std::string markdown = {});
 
-  /// Where nodes may write files that belong with the report (PNG images, CSV). Empty when the
-  /// run was started without --report.
-  const std::filesystem::path& artifact_dir() const { return artifact_dir_; }
+  /// Declares the unit and direction of the metric at dotted path `path` ("detection.recall").
+  /// report.json lists them under "metrics_meta"; sweep, ab and plot read them from there.
+  void describe_metric(const std::string& owner, const std::string& path, MetricMeta meta);
+
+  /// Writes `bytes` as `file` in the report folder and lists it in the report (images are shown
+  /// in report.md). Does nothing when the run has no report folder. Throws kestrel::Error if the
+  /// file cannot be written, or if another node already added a file of that name.
+  void add_artifact(const std::string& owner, const std::string& file, std::string_view bytes, std::string caption);
+  /// True when the run writes a report folder (artifacts are kept).
+  bool keeps_artifacts() const { return !artifact_dir_.empty(); }
   void set_artifact_dir(std::filesystem::path dir) { artifact_dir_ = std::move(dir); }
 
   struct Section {
@@ -29,10 +55,14 @@ class Report {
   };
   /// A copy of the sections, for writing.
   std::map<std::string, Section> sections() const;
+  std::map<std::string, MetricMeta> metrics() const;
+  std::vector<Artifact> artifacts() const;
 
  private:
   mutable std::mutex mutex_;
   std::map<std::string, Section> sections_;
+  std::map<std::string, MetricMeta> metrics_;
+  std::vector<Artifact> artifacts_;
   std::filesystem::path artifact_dir_;
 };
 

@@ -12,6 +12,7 @@ struct Shaper {
   virtual double shape(double value) const = 0;
 };
 
+// The older form: a component built from its parameters alone.
 class OffsetShaper final : public Shaper {
  public:
   static ComponentSpec spec() {
@@ -25,18 +26,30 @@ class OffsetShaper final : public Shaper {
 };
 KESTREL_REGISTER_COMPONENT(Shaper, OffsetShaper)
 
+struct ClampConfig {
+  double low = 0.0;
+  double high = 1.0;
+};
+
+// The current form: a config struct, a rule across its parameters, and a context.
 class ClampShaper final : public Shaper {
  public:
   static ComponentSpec spec() {
-    return ComponentSpec("clamp", "Limits to a range")
-        .param(param("low", 0.0).describe("lower bound"))
-        .param(param("high", 1.0).describe("upper bound"));
+    ConfigSpec<ClampConfig> c;
+    c.param("low", &ClampConfig::low).describe("lower bound");
+    c.param("high", &ClampConfig::high).describe("upper bound");
+    c.rule("low <= high", {"low", "high"}, [](const ClampConfig& k) { return k.low <= k.high; });
+    return ComponentSpec("clamp", "Limits to a range").config(std::move(c));
   }
-  explicit ClampShaper(const Params& p) : low_(p.get<double>("low")), high_(p.get<double>("high")) {}
-  double shape(double v) const override { return std::clamp(v, low_, high_); }
+  explicit ClampShaper(const ComponentInit& init) : cfg_(init.config<ClampConfig>()), seed_(init.seed()) {
+    init.log().debug("clamp {} to [{}, {}]", init.name(), cfg_.low, cfg_.high);
+  }
+  double shape(double v) const override { return std::clamp(v, cfg_.low, cfg_.high); }
+  std::uint64_t seed() const { return seed_; }
 
  private:
-  double low_, high_;
+  ClampConfig cfg_;
+  std::uint64_t seed_;
 };
 KESTREL_REGISTER_COMPONENT(Shaper, ClampShaper)
 

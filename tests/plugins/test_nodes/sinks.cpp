@@ -34,6 +34,13 @@ class Collector final : public Node {
     ctx.set_report_section(
         ctx.id(),
         {{"count", count_}, {"checksum", checksum_}, {"values", values_}, {"indices", indices_}, {"times_s", stamps_}});
+    ctx.describe_metric(ctx.id() + ".count", "messages", true);
+    if (ctx.keeps_artifacts()) {
+      std::string csv = "index,value\n";
+      for (std::size_t i = 0; i < values_.size(); ++i)
+        csv += std::to_string(indices_[i]) + "," + std::to_string(values_[i]) + "\n";
+      ctx.add_artifact(ctx.id() + ".csv", csv, "the values received");
+    }
   }
 
  private:

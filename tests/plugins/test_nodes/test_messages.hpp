@@ -1,5 +1,6 @@
 #pragma once
 // Message types used only by the framework's tests and benchmarks.
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -20,7 +21,31 @@ struct Blob {
   std::int64_t created_ns = 0;   ///< steady clock at publication
 };
 
+/// A message that counts every copy made of it, in the whole test plugin, so a test can prove
+/// that messages travel between nodes without being copied.
+struct Counted {
+  std::int64_t index = 0;
+
+  Counted() = default;
+  explicit Counted(std::int64_t i) : index(i) {}
+  Counted(const Counted& other) : index(other.index) { copies().fetch_add(1); }
+  Counted& operator=(const Counted& other) {
+    index = other.index;
+    copies().fetch_add(1);
+    return *this;
+  }
+  Counted(Counted&&) = default;
+  Counted& operator=(Counted&&) = default;
+  ~Counted() = default;
+
+  static std::atomic<std::uint64_t>& copies() {
+    static std::atomic<std::uint64_t> count{0};
+    return count;
+  }
+};
+
 }  // namespace kestrel::test
 
+KESTREL_MESSAGE(kestrel::test::Counted, "test.Counted", "an index; counts the copies made of it");
 KESTREL_MESSAGE(kestrel::test::Number, "test.Number", "a number with its source index");
 KESTREL_MESSAGE(kestrel::test::Blob, "test.Blob", "an opaque block of bytes");

@@ -1,4 +1,5 @@
 // Nodes that pass, change, combine or fail on numbers.
+#include <array>
 #include <kestrel/plugin.hpp>
 #include <thread>
 
@@ -34,38 +35,78 @@ class BlobRelay final : public Node {
 };
 KESTREL_REGISTER_NODE(BlobRelay)
 
+struct ScaleConfig {
+  enum class Mode { multiply, divide };
+  double factor = 2.0;
+  Mode mode = Mode::multiply;
+  std::vector<double> offsets;
+  bool enabled = true;
+};
+
 class Scale final : public Node {
  public:
   static constexpr Input<Number> kIn{"in"};
   static constexpr Output<Number> kOut{"out"};
   static NodeSpec spec() {
+    using Mode = ScaleConfig::Mode;
+    ConfigSpec<ScaleConfig> c;
+    c.param("factor", &ScaleConfig::factor).range(-1e6, 1e6).describe("the multiplier");
+    c.choice("mode", &ScaleConfig::mode, {{"multiply", Mode::multiply}, {"divide", Mode::divide}})
+        .describe("what to do");
+    c.param("offsets", &ScaleConfig::offsets).describe("added to the result, one per message, cycling");
+    c.param("enabled", &ScaleConfig::enabled).describe("false passes numbers through");
     return NodeSpec("scale", "Multiplies each number by a factor")
         .input(kIn, "numbers")
         .output(kOut, "scaled numbers")
-        .param(param("factor", 2.0).range(-1e6, 1e6).describe("the multiplier"))
-        .param(param("mode", std::string("multiply")).one_of({"multiply", "divide"}).describe("what to do"))
-        .param(param("offsets", std::vector<double>{}).describe("added to the result, one per message, cycling"))
-        .param(param("enabled", true).describe("false passes numbers through"));
+        .config(std::move(c));
   }
-  explicit Scale(NodeInit& init)
-      : factor_(init.param<double>("factor")),
-        divide_(init.param<std::string>("mode") == "divide"),
-        offsets_(init.param<std::vector<double>>("offsets")),
-        enabled_(init.param<bool>("enabled")) {}
+  explicit Scale(NodeInit& init) : cfg_(init.config<ScaleConfig>()) {}
   void process(Context& ctx) override {
     Number n = *ctx.get(kIn);
-    if (enabled_) n.value = divide_ ? n.value / factor_ : n.value * factor_;
-    if (!offsets_.empty()) n.value += offsets_[static_cast<std::size_t>(n.index) % offsets_.size()];
+    if (cfg_.enabled) n.value = cfg_.mode == ScaleConfig::Mode::divide ? n.value / cfg_.factor : n.value * cfg_.factor;
+    if (!cfg_.offsets.empty()) n.value += cfg_.offsets[static_cast<std::size_t>(n.index) % cfg_.offsets.size()];
     ctx.publish(kOut, n);
   }
 
  private:
-  double factor_;
-  bool divide_;
-  std::vector<double> offsets_;
-  bool enabled_;
+  ScaleConfig cfg_;
 };
 KESTREL_REGISTER_NODE(Scale)
+
+struct WindowConfig {
+  double low = -1.0;
+  double high = 1.0;
+  std::array<double, 2> fallback{0.0, 0.0};
+};
+
+// Passes numbers inside [low, high]; the others become fallback[0] (below) or fallback[1] (above).
+class Window final : public Node {
+ public:
+  static constexpr Input<Number> kIn{"in"};
+  static constexpr Output<Number> kOut{"out"};
+  static NodeSpec spec() {
+    ConfigSpec<WindowConfig> c;
+    c.param("low", &WindowConfig::low).describe("lowest value passed");
+    c.param("high", &WindowConfig::high).describe("highest value passed");
+    c.param("fallback", &WindowConfig::fallback).describe("published instead of a value below / above the window");
+    c.rule("low <= high", {"low", "high"}, [](const WindowConfig& k) { return k.low <= k.high; });
+    return NodeSpec("window", "Passes numbers inside a window")
+        .input(kIn, "numbers")
+        .output(kOut, "numbers")
+        .config(std::move(c));
+  }
+  explicit Window(NodeInit& init) : cfg_(init.config<WindowConfig>()) {}
+  void process(Context& ctx) override {
+    Number n = *ctx.get(kIn);
+    if (n.value < cfg_.low) n.value = cfg_.fallback[0];
+    if (n.value > cfg_.high) n.value = cfg_.fallback[1];
+    ctx.publish(kOut, n);
+  }
+
+ private:
+  WindowConfig cfg_;
+};
+KESTREL_REGISTER_NODE(Window)
 
 // a + (latest b): `a` triggers, `b` is read as its newest value.
 class Adder final : public Node {

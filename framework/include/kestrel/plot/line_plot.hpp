@@ -34,6 +34,9 @@ struct Panel {
   double y_min = 0.0, y_max = 1.0;
 };
 
+/// The panels stacked vertically, as the bytes of one PNG image (for Context::add_artifact).
+std::string render_png(const std::vector<Panel>& panels, int width = 1000, int panel_height = 300);
+
 /// Writes the panels stacked vertically into one PNG. Throws kestrel::Error if it cannot write.
 void save_png(const std::filesystem::path& file, const std::vector<Panel>& panels, int width = 1000,
               int panel_height = 300);

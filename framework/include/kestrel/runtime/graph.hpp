@@ -30,6 +30,8 @@ struct QueuePolicy {
   std::string str() const;
   /// Parses "latest", "fifo N", "block" or "block N". Returns nullopt on a malformed policy.
   static std::optional<QueuePolicy> parse(const std::string& text);
+  /// The forms parse() accepts, for error messages.
+  static constexpr const char* kForms = "expected 'latest', 'fifo N' or 'block N'";
 };
 
 struct NodeConfig {

@@ -3,6 +3,7 @@
 #include <atomic>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -21,6 +22,10 @@ struct RunOptions {
   bool progress = false;              ///< a status line on stderr every second
   /// Set from elsewhere (a signal handler, a test) to stop the run cleanly.
   const std::atomic<bool>* stop_flag = nullptr;
+  /// Called once, on the run's own thread, when the run is under way: every node is built and
+  /// every source has been called at least once (or has ended). Not called if no node could start
+  /// or the run ended before.
+  std::function<void()> on_running;
 };
 
 struct NodeStats {

@@ -1,77 +1,69 @@
 #pragma once
-// Multi-target track management shared by the trackers (paper, section 2.3): predict every
-// track, associate detections, update the matched tracks, give birth to a track for each
-// detection no track claimed, delete a track after too many consecutive misses, and select the
-// target to aim at. The filter inside a track (Kalman, particles) is supplied by the tracker.
+// The one multi-target tracking loop (paper, section 2.3), composed from swappable components as
+// Stone Soup composes its trackers: each frame, predict every track to the frame's time, let the
+// associator pair tracks with detections, update the paired tracks, let the initiator confirm or
+// drop tentative tracks and the deleter end confirmed ones, start the tracks the initiator asks
+// for, and let the selector choose the target among the confirmed tracks.
 #include <Eigen/Core>
 #include <cstdint>
-#include <functional>
 #include <memory>
 #include <optional>
-#include <string>
 #include <vector>
 
 #include "kestrel/messages/tracks.hpp"
 #include "kestrel/time.hpp"
 #include "kestrel/tracking/associator.hpp"
+#include "kestrel/tracking/deleter.hpp"
+#include "kestrel/tracking/filter.hpp"
+#include "kestrel/tracking/initiator.hpp"
+#include "kestrel/tracking/selector.hpp"
+#include "kestrel/tracking/track_status.hpp"
 
 namespace kestrel::tracking {
 
-/// One track's estimator.
-class TrackFilter {
- public:
-  virtual ~TrackFilter() = default;
-  virtual void predict(double dt) = 0;
-  virtual void update(const Eigen::Vector3d& z) = 0;
-  virtual PredictedMeasurement predicted_measurement() const = 0;
-  virtual Eigen::VectorXd state() const = 0;
-  virtual Eigen::MatrixXd covariance() const = 0;
+/// The components a tracker is made of. Every one is required.
+struct TrackerParts {
+  std::shared_ptr<Filter> filter;
+  std::shared_ptr<const Associator> associator;
+  std::shared_ptr<const Initiator> initiator;
+  std::shared_ptr<const Deleter> deleter;
+  std::shared_ptr<const Selector> selector;
 };
 
-/// Makes the filter of a new track from its first detection.
-using FilterFactory = std::function<std::unique_ptr<TrackFilter>(const Eigen::Vector3d& first_detection)>;
-
-enum class Selection {
-  longest_living,  ///< the paper's rule: noise tracks are short-lived
-  most_hits,
-  nearest,  ///< closest to the camera
-};
-
-/// "longest_living", "most_hits" or "nearest".
-Selection parse_selection(const std::string& name);
-
-struct TrackManagerOptions {
-  int max_misses = 10;  ///< consecutive frames without a detection before deletion
-  Selection selection = Selection::longest_living;
-  /// Hits before a track is published (and can be the target); 1 publishes every track at
-  /// birth, as the paper does. More keeps one-frame noise out of the output. A tentative track
-  /// (fewer hits) is deleted at its first miss.
-  int confirm_hits = 1;
+/// What a tracker did over a run, for its report.
+struct TrackerCounts {
+  std::uint64_t frames = 0;
+  std::uint64_t empty_frames = 0;    ///< frames without a detection
+  std::uint64_t tracks_started = 0;  ///< tentative tracks born
+  std::uint64_t tracks_confirmed = 0;
+  std::uint64_t target_coasted_frames = 0;  ///< frames whose target had no detection
 };
 
 class TrackManager {
  public:
-  TrackManager(std::shared_ptr<const Associator> associator, FilterFactory factory, TrackManagerOptions options);
+  /// Throws kestrel::Error if a part is missing.
+  explicit TrackManager(TrackerParts parts);
 
-  /// One frame: detections (camera frame) captured at `stamp`.
+  /// One frame: the detections captured at `stamp`. Throws kestrel::Error, and changes nothing,
+  /// if `stamp` is earlier than the previous frame's.
   msg::Tracks step(Time stamp, const std::vector<Eigen::Vector3d>& detections);
 
+  /// Live tracks, tentative ones included.
   std::size_t size() const { return tracks_.size(); }
+  const TrackerCounts& counts() const { return counts_; }
 
  private:
   struct Track {
-    std::uint64_t id = 0;
-    int age = 0, hits = 0, misses = 0;
-    bool confirmed = false;
+    TrackStatus status;
     std::unique_ptr<TrackFilter> filter;
   };
+  void start_track(const Eigen::Vector3d& detection);
 
-  std::shared_ptr<const Associator> associator_;
-  FilterFactory factory_;
-  TrackManagerOptions options_;
-  std::vector<Track> tracks_;
+  TrackerParts parts_;
+  std::vector<Track> tracks_;  // in order of birth
   std::uint64_t next_id_ = 1;
   std::optional<Time> last_stamp_;
+  TrackerCounts counts_;
 };
 
 }  // namespace kestrel::tracking

@@ -1,0 +1,23 @@
+#include "graph_loading.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <cstdio>
+
+namespace kestrel::cli {
+
+LoadedGraph load_graph(const GraphArgs& args, const char* not_done) {
+  LoadedGraph loaded;
+  const GraphSource source = GraphSource::from_file(args.graph);
+  loaded.plugins = std::make_unique<PluginHost>();
+  loaded.plugins->load_search_path(source.plugin_paths());
+  for (const auto& e : loaded.plugins->errors()) spdlog::warn("{}", e.message);
+  BuildResult result = build_graph(source, loaded.plugins->registry(), args.overrides);
+  std::fputs(result.diagnostics.str().c_str(), stderr);
+  if (result.diagnostics.has_errors())
+    std::fprintf(stderr, "%s: %zu error(s); %s\n", args.graph.c_str(), result.diagnostics.error_count(), not_done);
+  loaded.graph = std::move(result.graph);
+  return loaded;
+}
+
+}  // namespace kestrel::cli

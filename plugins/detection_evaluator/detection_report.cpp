@@ -1,0 +1,55 @@
+#include "detection_report.hpp"
+
+namespace kestrel::evaluation {
+
+namespace {
+
+nlohmann::json axes_or_null(const std::optional<Eigen::Vector3d>& v) {
+  if (!v) return {{"x", nullptr}, {"y", nullptr}, {"z", nullptr}};
+  return {{"x", v->x()}, {"y", v->y()}, {"z", v->z()}};
+}
+
+std::optional<double> axis(const std::optional<Eigen::Vector3d>& v, int i) {
+  return v ? std::optional<double>((*v)[i]) : std::nullopt;
+}
+
+}  // namespace
+
+ReportSection detection_report(const DetectionSummary& s) {
+  ReportSection section;
+  section.values = {{"frames", s.frames},
+                    {"precision", number_or_null(s.precision)},
+                    {"recall", number_or_null(s.recall)},
+                    {"tp", s.tp},
+                    {"fp", s.fp},
+                    {"fn", s.fn},
+                    {"rmse_m", axes_or_null(s.rmse)},
+                    {"mean_error_m", axes_or_null(s.mean_error)},
+                    {"lag_s", number_or_null(s.lag_s)}};
+  section.metrics = {{"frames", {"", std::nullopt, false}},
+                     {"precision", {"", true, false}},
+                     {"recall", {"", true, false}},
+                     {"tp", {"", true, false}},
+                     {"fp", {"", false, false}},
+                     {"fn", {"", false, false}},
+                     {"rmse_m", {"m", false, false}},
+                     {"mean_error_m", {"m", false, true}},
+                     {"lag_s", {"s", false, true}}};
+  const auto f3 = [](const std::optional<double>& v) { return text_or_undefined(v, "{:.3f}"); };
+  const auto bias = [](const std::optional<double>& v) { return text_or_undefined(v, "{:+.3f} m"); };
+  section.markdown = fmt::format(
+      "| frames | precision | recall | TP | FP | FN | RMSE x [m] | RMSE y [m] | RMSE z [m] | lag [s] |\n"
+      "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n"
+      "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n\n"
+      "Mean error (bias) of matched detections: x {}, y {}, z {}.\n",
+      s.frames, f3(s.precision), f3(s.recall), s.tp, s.fp, s.fn, f3(axis(s.rmse, 0)), f3(axis(s.rmse, 1)),
+      f3(axis(s.rmse, 2)), f3(s.lag_s), bias(axis(s.mean_error, 0)), bias(axis(s.mean_error, 1)),
+      bias(axis(s.mean_error, 2)));
+  if (!s.precision || !s.recall || !s.rmse || !s.lag_s)
+    section.markdown +=
+        "\nUndefined: a figure with nothing to measure it on (no detections, nothing to find, no matches, or "
+        "too few to correlate for the lag).\n";
+  return section;
+}
+
+}  // namespace kestrel::evaluation

@@ -1,0 +1,75 @@
+// The `tracker` node: the paper's multi-target tracker (section 2.3), composed from components
+// that YAML names and configures one by one, Stone Soup style:
+//
+//   - id: tracker
+//     type: tracker
+//     params:
+//       filter: {type: kalman, r: 1.0}             # or particle (plugins/particle_tracker)
+//       associator: {type: hungarian, gate_m: 1.0}  # or greedy (plugins/associators)
+//       initiator: {type: consecutive_hits, confirm_hits: 1}
+//       deleter: {type: consecutive_misses, max_misses: 10}
+//       selector: longest_living                    # or most_hits, nearest, most_confident
+//
+// Every number belongs to the component that uses it; the node only names the components.
+// This plugin also provides the components that need no other library.
+#include <kestrel/plugin.hpp>
+#include <kestrel/tracking/deleter.hpp>
+#include <kestrel/tracking/initiator.hpp>
+#include <kestrel/tracking/kalman_filter.hpp>
+#include <kestrel/tracking/selector.hpp>
+#include <kestrel/tracking/tracker_node.hpp>
+
+namespace kestrel::tracking {
+
+struct TrackerConfig {
+  ComponentConfig filter;
+  ComponentConfig associator;
+  ComponentConfig initiator;
+  ComponentConfig deleter;
+  ComponentConfig selector;
+};
+
+class Tracker final : public TrackerNode {
+ public:
+  static NodeSpec spec() {
+    ConfigSpec<TrackerConfig> c;
+    c.component("filter", &TrackerConfig::filter, "filter", "kalman")
+        .describe(
+            "per-track estimator with its noise parameters: kalman (the paper's constant-acceleration Kalman "
+            "filter: q, r, p) or particle (the same model as MRPT particle filters)");
+    declare_associator(c, &TrackerConfig::associator);
+    c.component("initiator", &TrackerConfig::initiator, "initiator", "consecutive_hits")
+        .describe("which detections start tracks and when a track is confirmed: consecutive_hits (confirm_hits)");
+    c.component("deleter", &TrackerConfig::deleter, "deleter", "consecutive_misses")
+        .describe("when a confirmed track ends: consecutive_misses (max_misses)");
+    c.component("selector", &TrackerConfig::selector, "selector", "longest_living")
+        .describe(
+            "which confirmed track is the target: longest_living (the paper's), most_hits, nearest or "
+            "most_confident; a tie goes to the oldest track");
+    return with_ports(NodeSpec("tracker", "Multi-target tracker made of swappable components (paper, 2.3)"))
+        .details(
+            "Each frame: every track's filter predicts to the frame's time; the associator pairs tracks with "
+            "detections within its gate; paired tracks are updated; the initiator confirms or drops tentative "
+            "tracks and the deleter ends confirmed ones; each detection no track claimed starts a tentative "
+            "track; the selector chooses the target among the confirmed tracks, which alone are published. The "
+            "defaults are the paper's tracker: Kalman filter with q = r = p = 1, Hungarian association within "
+            "1.0 m, a track published at birth, deleted after 10 misses, the longest-living track as the target.")
+        .config(std::move(c));
+  }
+
+  explicit Tracker(NodeInit& init)
+      : TrackerNode(TrackerParts{init.make_component<Filter>("filter"), init.make_component<Associator>("associator"),
+                                 init.make_component<Initiator>("initiator"), init.make_component<Deleter>("deleter"),
+                                 init.make_component<Selector>("selector")}) {}
+};
+KESTREL_REGISTER_NODE(Tracker)
+
+}  // namespace kestrel::tracking
+
+KESTREL_REGISTER_COMPONENT(kestrel::tracking::Filter, kestrel::tracking::KalmanFilter)
+KESTREL_REGISTER_COMPONENT(kestrel::tracking::Initiator, kestrel::tracking::ConsecutiveHitsInitiator)
+KESTREL_REGISTER_COMPONENT(kestrel::tracking::Deleter, kestrel::tracking::ConsecutiveMissesDeleter)
+KESTREL_REGISTER_COMPONENT(kestrel::tracking::Selector, kestrel::tracking::LongestLivingSelector)
+KESTREL_REGISTER_COMPONENT(kestrel::tracking::Selector, kestrel::tracking::MostHitsSelector)
+KESTREL_REGISTER_COMPONENT(kestrel::tracking::Selector, kestrel::tracking::NearestSelector)
+KESTREL_REGISTER_COMPONENT(kestrel::tracking::Selector, kestrel::tracking::MostConfidentSelector)
