@@ -36,6 +36,8 @@ function(kestrel_add_plugin name)
     # Installed plugins reach kestrel's libraries relative to their own folder (KestrelLayout.cmake).
     set_target_properties(${target} PROPERTIES INSTALL_RPATH "${KESTREL_PLUGIN_RPATH}")
     install(TARGETS ${target} LIBRARY DESTINATION "${KESTREL_INSTALL_PLUGINDIR}")
+    # Tests that load every shipped plugin depend on this list.
+    set_property(GLOBAL APPEND PROPERTY KESTREL_SHIPPED_PLUGINS ${target})
   endif()
 endfunction()
 

@@ -33,13 +33,21 @@ SweepSummary summarise_sweep(const SweepPlan& plan, const std::vector<BatchResul
     if (r.exit_code != 0) ++s.failed;
   }
   s.means.resize(plan.grid.size());
+  s.undefined.resize(plan.grid.size());
+  s.runs_per_point.assign(plan.grid.size(), 0);
+  for (std::size_t j = 0; j < s.runs.size(); ++j) ++s.runs_per_point[plan.point_of(j)];
   std::vector<Metrics> judged(plan.grid.size());  // means of what is judged: magnitudes where meta says so
   for (std::size_t g = 0; g < plan.grid.size(); ++g)
     for (const auto& m : s.metric_names) {
       std::vector<double> values;
       for (std::size_t j = 0; j < s.runs.size(); ++j)
         if (plan.point_of(j) == g)
-          if (const auto it = s.runs[j].find(m); it != s.runs[j].end()) values.push_back(it->second);
+          if (const auto it = s.runs[j].find(m); it != s.runs[j].end()) {
+            if (std::isnan(it->second))
+              ++s.undefined[g][m];
+            else
+              values.push_back(it->second);
+          }
       s.means[g][m] = mean(values);
       judged[g][m] = s.meta.by_magnitude(m) ? mean(magnitudes(values)) : s.means[g][m];
     }
@@ -83,6 +91,10 @@ AbSummary summarise_ab(const std::vector<BatchResult>& results) {
       if (const auto it = mb.find(k); it != mb.end()) {
         AbRow& row = rows[k];
         row.metric = k;
+        if (std::isnan(va) || std::isnan(it->second)) {  // undefined on one side: no pair
+          ++row.undefined;
+          continue;
+        }
         row.seeds.push_back(static_cast<int>(s) + 1);
         row.a.push_back(va);
         row.b.push_back(it->second);
@@ -92,7 +104,7 @@ AbSummary summarise_ab(const std::vector<BatchResult>& results) {
     row.by_magnitude = summary.meta.by_magnitude(metric);
     row.difference =
         row.by_magnitude ? paired_difference(magnitudes(row.a), magnitudes(row.b)) : paired_difference(row.a, row.b);
-    row.better = verdict(row.difference, summary.meta.direction(metric));
+    row.better = row.seeds.empty() ? "" : verdict(row.difference, summary.meta.direction(metric));
     summary.rows.push_back(row);
   }
   return summary;

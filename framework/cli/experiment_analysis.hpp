@@ -21,7 +21,10 @@ struct SweepSummary {
   std::vector<int> exit_codes;         ///< per job
   std::set<std::string> metric_names;  ///< every metric of any run
   std::set<std::string> varying;       ///< metrics whose mean differs between grid points
-  std::vector<Metrics> means;          ///< per grid point: mean over the seeds that have the metric
+  std::vector<Metrics> means;          ///< per grid point: mean over the seeds where it is defined
+  /// Per grid point: how many of its runs reported the metric as undefined (null).
+  std::vector<std::map<std::string, std::size_t>> undefined;
+  std::vector<std::size_t> runs_per_point;  ///< per grid point
   std::size_t failed = 0;              ///< runs that exited non-zero
   MetricsMeta meta;
 
@@ -36,10 +39,12 @@ struct SweepSummary {
 
 SweepSummary summarise_sweep(const SweepPlan& plan, const std::vector<BatchResult>& results);
 
-/// One metric compared between A and B over the seeds where both runs succeeded.
+/// One metric compared between A and B over the seeds where both runs succeeded and both
+/// defined it.
 struct AbRow {
   std::string metric;
-  std::vector<int> seeds;
+  std::vector<int> seeds;     ///< where both runs defined the metric
+  std::size_t undefined = 0;  ///< seeds left out: the metric was null in A, in B or in both
   std::vector<double> a, b;   ///< per seed, as reported
   bool by_magnitude = false;  ///< the difference is of |a| and |b|
   PairedDifference difference;

@@ -30,11 +30,28 @@ std::string sweep_csv(const SweepPlan& plan, const SweepSummary& summary) {
     csv += fmt::format("{},{}", plan.seed_of(j), summary.exit_codes[j]);
     for (const auto& m : summary.metric_names) {
       const auto it = summary.runs[j].find(m);
-      csv += it == summary.runs[j].end() ? "," : fmt::format(",{}", it->second);
+      // Missing or undefined (null in the report): an empty cell, which `kestrel plot` draws as a gap.
+      csv += it == summary.runs[j].end() || std::isnan(it->second) ? "," : fmt::format(",{}", it->second);
     }
     csv += "\n";
   }
   return csv;
+}
+
+// A mean over seeds, saying how many seeds left the metric undefined.
+std::string mean_cell(const SweepSummary& summary, std::size_t point, const std::string& metric) {
+  const auto it = summary.undefined[point].find(metric);
+  const std::size_t undefined = it == summary.undefined[point].end() ? 0 : it->second;
+  const std::string value = number(summary.means[point].at(metric));
+  if (undefined == 0 || std::isnan(summary.means[point].at(metric))) return value;
+  return fmt::format("{} ({} of {} n/a)", value, undefined, summary.runs_per_point[point]);
+}
+
+bool any_undefined(const SweepSummary& summary) {
+  for (const auto& per_point : summary.undefined)
+    for (const auto& [m, n] : per_point)
+      if (n > 0) return true;
+  return false;
 }
 
 // The point's swept values, as --set would take them.
@@ -72,12 +89,12 @@ std::string write_sweep_outputs(const std::filesystem::path& dir, const std::str
   for (std::size_t g = 0; g < plan.grid.size(); ++g) {
     md += "|";
     for (const auto& v : plan.grid[g]) md += " " + v + " |";
-    for (const auto& m : shown) md += fmt::format(" {} |", number(summary.means[g].at(m)));
+    for (const auto& m : shown) md += fmt::format(" {} |", mean_cell(summary, g, m));
     md += "\n";
   }
   std::vector<std::string> same;
   for (const auto& m : summary.metric_names)
-    if (!shown.count(m)) same.push_back(summary.meta.label(m) + " = " + number(summary.means[0].at(m)));
+    if (!shown.count(m)) same.push_back(summary.meta.label(m) + " = " + mean_cell(summary, 0, m));
   if (!same.empty()) md += fmt::format("\nThe same at every point: {}.\n", fmt::join(same, ", "));
   if (!summary.best.empty()) {
     md += "\nBest point per metric (which way is better: the reports' metrics_meta):\n\n";
@@ -109,6 +126,9 @@ std::string write_sweep_outputs(const std::filesystem::path& dir, const std::str
       md += fmt::format("\nsweep.png shows {} of {} metrics; `kestrel plot sweep.csv --x {} --y METRIC` draws any.\n",
                         panels.size(), plotted.size(), x);
   }
+  if (any_undefined(summary))
+    md += "\nn/a: undefined (the report gave null: nothing to measure it on); \"k of n n/a\": the mean is over the "
+          "other seeds.\n";
   if (summary.failed) md += fmt::format("\n{} run(s) failed; see runs/*/run.log.\n", summary.failed);
   write_file(dir / "sweep.md", md);
   return md;
@@ -134,7 +154,7 @@ std::string write_ab_outputs(const std::filesystem::path& dir, const AbArgs& arg
       "|\n|---|---:|---:|---:|---|---|\n",
       described(args.graph_a, args.overrides_a), described(args.graph_b, args.overrides_b), args.seeds,
       args.overrides.empty() ? "" : fmt::format(", both with {}", fmt::join(args.overrides, ", ")));
-  bool any_magnitude = false, any_unjudged = false;
+  bool any_magnitude = false, any_unjudged = false, any_undefined = false;
   for (const auto& row : summary.rows) {
     const PairedDifference& d = row.difference;
     nlohmann::json entry = {{"mean_a", d.mean_a},
@@ -143,13 +163,24 @@ std::string write_ab_outputs(const std::filesystem::path& dir, const AbArgs& arg
                             {"ci95", {d.ci95.low, d.ci95.high}},
                             {"better", row.better.empty() ? nlohmann::json() : nlohmann::json(row.better)}};
     if (row.by_magnitude) entry["by_magnitude"] = true;
+    entry["seeds"] = row.seeds.size();
+    entry["undefined_seeds"] = row.undefined;
+    any_undefined = any_undefined || row.undefined > 0;
     json["metrics"][row.metric] = entry;
     any_magnitude = any_magnitude || row.by_magnitude;
     any_unjudged = any_unjudged || row.better.empty();
-    md += fmt::format("| {}{} | {:.4g} | {:.4g} | {:+.4g} | [{:+.4g}, {:+.4g}] | {} |\n", meta.label(row.metric),
-                      row.by_magnitude ? " (magnitude)" : "", d.mean_a, d.mean_b, d.mean_difference, d.ci95.low,
-                      d.ci95.high, row.better.empty() ? "n/a" : row.better);
+    const std::string undefined =
+        row.undefined ? fmt::format(" ({} of {} seeds n/a)", row.undefined, row.undefined + row.seeds.size()) : "";
+    if (row.seeds.empty())
+      md += fmt::format("| {}{} | n/a | n/a | n/a | n/a | n/a |\n", meta.label(row.metric), undefined);
+    else
+      md += fmt::format("| {}{}{} | {:.4g} | {:.4g} | {:+.4g} | [{:+.4g}, {:+.4g}] | {} |\n", meta.label(row.metric),
+                        row.by_magnitude ? " (magnitude)" : "", undefined, d.mean_a, d.mean_b, d.mean_difference,
+                        d.ci95.low, d.ci95.high, row.better.empty() ? "n/a" : row.better);
   }
+  if (any_undefined)
+    md += "\n(k of n seeds n/a): the metric was undefined (null) in A or B on k seeds; the means, difference and "
+          "interval are over the others.\n";
   if (any_magnitude) md += "\n(magnitude): means and difference of |value|, as the reports' metrics_meta asks.\n";
   if (any_unjudged) md += "\nn/a: the reports' metrics_meta does not say which way is better.\n";
   if (!meta.conflicts().empty())

@@ -2,6 +2,8 @@
 // of a CSV file (sweep tables, per-frame errors), one panel per y entry; COL+COL overlays columns
 // in a panel. Units and which way is better come from a metrics_meta (kestrel sweep writes
 // metrics_meta.json beside sweep.csv).
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -119,6 +121,14 @@ int plot_command(const PlotArgs& args) {
     }
     write_png(args.output, panels, 900, 320);
     std::printf("wrote %s\n", args.output.c_str());
+    // Undefined values (empty cells, as sweep.csv writes a null metric) are gaps: say how many.
+    for (const auto& panel : panels)
+      for (const auto& series : panel.series) {
+        const auto gaps = std::count_if(series.y.begin(), series.y.end(), [](double v) { return std::isnan(v); });
+        if (gaps > 0)
+          std::printf("%s: %ld of %zu rows undefined (empty cells), drawn as gaps\n", series.label.c_str(),
+                      static_cast<long>(gaps), series.y.size());
+      }
     return kOk;
   });
 }

@@ -1,6 +1,7 @@
 // plugins and inspect: the commands that describe what the loaded plugins provide.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include "commands.hpp"
@@ -69,6 +70,30 @@ void inspect_node(const NodeType& type, const Registry& registry) {
   }
 }
 
+
+// A message type and its fields: name, type, unit and frame in aligned columns, then what each is.
+void print_message(const MessageTypeEntry& message) {
+  const MessageInfo& info = message.info;
+  std::printf("Message type %s\n  %s\n  first registered by: %s\n", info.name.c_str(), info.description.c_str(),
+              message.plugin.empty() ? "(framework)" : message.plugin.c_str());
+  if (info.fields.empty()) {
+    std::printf("  fields: not declared (KESTREL_MESSAGE_FIELDS)\n");
+    return;
+  }
+  std::size_t name_w = 5, type_w = 4, unit_w = 4;
+  for (const auto& f : info.fields) {
+    name_w = std::max(name_w, f.name.size());
+    type_w = std::max(type_w, f.type.size());
+    unit_w = std::max(unit_w, f.unit.size());
+  }
+  std::printf("  fields:\n    %-*s  %-*s  %-*s  %s\n", int(name_w), "field", int(type_w), "type", int(unit_w), "unit",
+              "frame");
+  for (const auto& f : info.fields)
+    std::printf("    %-*s  %-*s  %-*s  %s\n      %s\n", int(name_w), f.name.c_str(), int(type_w), f.type.c_str(),
+                int(unit_w), f.unit.empty() ? "-" : f.unit.c_str(), f.frame.empty() ? "-" : f.frame.c_str(),
+                f.description.c_str());
+}
+
 }  // namespace
 
 int plugins_command() {
@@ -96,6 +121,7 @@ int plugins_command() {
   print_errors(*host);
   return host->errors().empty() ? kOk : kNotFound;
 }
+
 
 int inspect_command(const std::string& name) {
   auto host = load_plugins();
@@ -126,8 +152,7 @@ int inspect_command(const std::string& name) {
   for (const auto& [full, m] : registry.messages())
     if (!message && full.size() > name.size() && full.ends_with("." + name)) message = &m;
   if (message) {
-    std::printf("Message type %s\n  %s\n  first registered by: %s\n", message->info.name.c_str(),
-                message->info.description.c_str(), message->plugin.empty() ? "(framework)" : message->plugin.c_str());
+    print_message(*message);
     return kOk;
   }
   std::vector<std::string> names = registry.node_type_names();

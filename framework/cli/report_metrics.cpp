@@ -1,6 +1,7 @@
 #include "report_metrics.hpp"
 
 #include <fstream>
+#include <limits>
 #include <set>
 
 namespace kestrel::cli {
@@ -12,6 +13,8 @@ void flatten(const nlohmann::json& value, const std::string& prefix, Metrics& ou
     for (const auto& [k, v] : value.items()) flatten(v, prefix + "." + k, out);
   } else if (value.is_number()) {
     out[prefix] = value.get<double>();
+  } else if (value.is_null()) {
+    out[prefix] = std::numeric_limits<double>::quiet_NaN();  // undefined: nothing to measure it on
   }
 }
 

@@ -297,6 +297,13 @@ TEST(Cli, InspectPluginsAndDotDescribeTheGraph) {
   EXPECT_THAT(out, HasSubstr("Message type test.Number"));
   EXPECT_EQ(run_cli({"inspect", "Number"}, &out), 0);
   EXPECT_THAT(out, HasSubstr("Message type test.Number"));
+  // Its fields with type, unit and frame; a type that declares none says so.
+  EXPECT_THAT(out, HasSubstr("    field  type    unit  frame\n"
+                             "    index  int64   -     -\n"
+                             "      publication index at the source\n"
+                             "    value  double  m     world\n"));
+  EXPECT_EQ(run_cli({"inspect", "Blob"}, &out), 0);
+  EXPECT_THAT(out, HasSubstr("fields: not declared"));
   EXPECT_EQ(run_cli({"plugins"}, &out), 0);
   EXPECT_THAT(out, HasSubstr("counter_source"));
   EXPECT_THAT(out, HasSubstr("Publishes 0, 1, 2"));
@@ -444,6 +451,14 @@ TEST(Cli, PlotReadsMetricsMeta) {
       0)
       << out;
   EXPECT_TRUE(fs::exists(dir / "a.png"));
+  // An undefined value (an empty cell, as sweep.csv writes a null metric) is a gap, and counted.
+  std::ofstream(dir / "gaps.csv") << "a.x,tracking.mota\n1,0.9\n2,\n3,0.95\n";
+  EXPECT_EQ(run_cli({"plot", (dir / "gaps.csv").string(), "--x", "a.x", "--y", "tracking.mota", "-o",
+                     (dir / "gaps.png").string()},
+                    &out),
+            0)
+      << out;
+  EXPECT_THAT(out, HasSubstr("tracking.mota: 1 of 3 rows undefined (empty cells), drawn as gaps"));
   EXPECT_EQ(run_cli({"plot", csv, "--x", "a.x", "--y", "tracking.mota", "-o", (dir / "b.png").string(), "--meta",
                      (dir / "plain.json").string()},
                     &out),

@@ -242,3 +242,69 @@ TEST(AbOutputs, VerdictsUnitsAndMagnitudesInTheFiles) {
   EXPECT_EQ(json.at("metrics_meta"), meta);
   EXPECT_TRUE(fs::exists(dir / "ab.png"));
 }
+
+// A metric a report gives as null (undefined) is left out of the means and counted: per grid
+// point in sweep.md, as an empty cell in sweep.csv, per metric in ab.md and ab.json.
+TEST(SweepOutputs, UndefinedMetricsAreLeftOutOfMeansAndCounted) {
+  SweepArgs args;
+  args.graph = "g.yaml";
+  args.params = {"a.x=1:2:1"};
+  args.seeds = 3;
+  args.report_dir = fresh_dir("kestrel-sweep-undefined").string();
+  const SweepPlan plan = plan_sweep(args);
+  std::vector<BatchResult> results;
+  for (std::size_t j = 0; j < plan.jobs.size(); ++j) {
+    const double x = std::stod(plan.grid[plan.point_of(j)][0]);
+    const int seed = plan.seed_of(j);
+    BatchResult r;
+    // At x = 1, seed 1 finds nothing: its precision is undefined. At x = 2 no seed defines it.
+    const nlohmann::json precision = (x == 1 && seed != 1) ? nlohmann::json(0.5 + 0.1 * seed) : nlohmann::json();
+    r.report = {{"detection", {{"precision", precision}, {"frames", 10}}}, {"metrics_meta", kSweepMeta}};
+    results.push_back(r);
+  }
+  const SweepSummary summary = summarise_sweep(plan, results);
+  EXPECT_NEAR(summary.means[0].at("detection.precision"), 0.75, 1e-12);  // seeds 2 and 3 only
+  EXPECT_EQ(summary.undefined[0].at("detection.precision"), 1u);
+  EXPECT_TRUE(std::isnan(summary.means[1].at("detection.precision")));
+  EXPECT_EQ(summary.undefined[1].at("detection.precision"), 3u);
+  const std::string md = write_sweep_outputs(args.report_dir, args.graph, plan, summary);
+  EXPECT_THAT(md, HasSubstr("| 1 | 0.75 (1 of 3 n/a) |\n| 2 | n/a |\n"));
+  EXPECT_THAT(md, HasSubstr("n/a: undefined (the report gave null"));
+  const std::string csv = read(fs::path(args.report_dir) / "sweep.csv");
+  EXPECT_THAT(csv, HasSubstr("\n1,1,0,10,\n1,2,0,10,0.7\n"));  // an empty cell, not "nan"
+  EXPECT_THAT(csv, Not(HasSubstr("nan")));
+}
+
+TEST(AbOutputs, UndefinedMetricsAreLeftOutOfThePairsAndCounted) {
+  std::vector<BatchResult> results;
+  for (int seed = 1; seed <= 4; ++seed)
+    for (const int side : {0, 1}) {
+      BatchResult r;
+      // B has no lag on seed 2 (too few samples); nobody has a precision.
+      const nlohmann::json lag = side == 1 && seed == 2 ? nlohmann::json() : nlohmann::json(0.1 * seed + 0.05 * side);
+      r.report = {{"tracking", {{"lag_s", lag}, {"precision", nullptr}}}, {"metrics_meta", kSweepMeta}};
+      results.push_back(r);
+    }
+  const AbSummary summary = summarise_ab(results);
+  ASSERT_EQ(summary.rows.size(), 2u);
+  const AbRow& lag = summary.rows[0];
+  EXPECT_EQ(lag.metric, "tracking.lag_s");
+  EXPECT_THAT(lag.seeds, ElementsAre(1, 3, 4));
+  EXPECT_EQ(lag.undefined, 1u);
+  EXPECT_NEAR(lag.difference.mean_difference, 0.05, 1e-12);
+  EXPECT_EQ(summary.rows[1].undefined, 4u);
+  EXPECT_TRUE(summary.rows[1].seeds.empty());
+  AbArgs args;
+  args.graph_a = "a.yaml";
+  args.graph_b = "b.yaml";
+  args.seeds = 4;
+  const fs::path dir = fresh_dir("kestrel-ab-undefined");
+  const std::string md = write_ab_outputs(dir, args, summary);
+  EXPECT_THAT(md, HasSubstr("| tracking.lag_s [s] (magnitude) (1 of 4 seeds n/a) | 0.2667 | 0.3167 | +0.05 |"));
+  EXPECT_THAT(md, HasSubstr("| tracking.precision (4 of 4 seeds n/a) | n/a | n/a | n/a | n/a | n/a |"));
+  const auto json = nlohmann::json::parse(read(dir / "ab.json"));
+  EXPECT_EQ(json.at("metrics").at("tracking.lag_s").at("undefined_seeds"), 1);
+  EXPECT_EQ(json.at("metrics").at("tracking.lag_s").at("seeds"), 3);
+  EXPECT_EQ(json.at("metrics").at("tracking.precision").at("undefined_seeds"), 4);
+  EXPECT_TRUE(json.at("metrics").at("tracking.precision").at("mean_a").is_null());
+}

@@ -10,6 +10,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "kestrel/time.hpp"
 
@@ -28,15 +29,41 @@ concept MessageType = requires {
 /// The wildcard port type: an input of type AnyMessage accepts every message type.
 struct AnyMessage {};
 
+/// One field of a message as its header declares it (KESTREL_MESSAGE_FIELDS). Fields of nested
+/// elements are named by their path: `items[].position`.
+struct MessageFieldDecl {
+  std::string_view name;
+  std::string_view type;
+  std::string_view unit;   ///< SI unit, "" for none (a count, a flag, a name)
+  std::string_view frame;  ///< "world", "body", "camera", "in frame" (the message's `frame`), or ""
+  std::string_view description;
+};
+
+/// Specialise through KESTREL_MESSAGE_FIELDS(T, {...}, ...), never by hand. Optional: a message
+/// without it is still a message, but `kestrel inspect` cannot list its fields.
+template <class T>
+struct MessageFields;
+
+/// A field as the registry keeps it: owned strings, valid after the declaring plugin is unloaded.
+struct MessageField {
+  std::string name, type, unit, frame, description;
+};
+
 /// A message type as the registry and `kestrel inspect` see it.
 struct MessageInfo {
   std::string name;
   std::string description;
+  std::vector<MessageField> fields;  ///< empty when the type declares none
 };
 
 template <MessageType T>
 MessageInfo message_info() {
-  return {std::string(MessageTraits<T>::name), std::string(MessageTraits<T>::description)};
+  MessageInfo info{std::string(MessageTraits<T>::name), std::string(MessageTraits<T>::description), {}};
+  if constexpr (requires { MessageFields<T>::fields; })
+    for (const MessageFieldDecl& f : MessageFields<T>::fields)
+      info.fields.push_back({std::string(f.name), std::string(f.type), std::string(f.unit), std::string(f.frame),
+                             std::string(f.description)});
+  return info;
 }
 
 /// One published message: the immutable payload, its type name, when it was published and a
@@ -60,6 +87,14 @@ struct Envelope {
   struct kestrel::MessageTraits<T> {                             \
     static constexpr std::string_view name = NAME;               \
     static constexpr std::string_view description = DESCRIPTION; \
+  }
+
+/// Declares the fields of message type T, in the header that defines T, after KESTREL_MESSAGE:
+/// KESTREL_MESSAGE_FIELDS(my::Scan, {"stamp", "Time", "ns", "", "capture time"}, ...).
+#define KESTREL_MESSAGE_FIELDS(T, ...)                                     \
+  template <>                                                              \
+  struct kestrel::MessageFields<T> {                                       \
+    static constexpr kestrel::MessageFieldDecl fields[] = {__VA_ARGS__};   \
   }
 
 KESTREL_MESSAGE(kestrel::AnyMessage, "*", "any message type");

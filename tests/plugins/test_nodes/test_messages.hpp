@@ -48,4 +48,6 @@ struct Counted {
 
 KESTREL_MESSAGE(kestrel::test::Counted, "test.Counted", "an index; counts the copies made of it");
 KESTREL_MESSAGE(kestrel::test::Number, "test.Number", "a number with its source index");
+KESTREL_MESSAGE_FIELDS(kestrel::test::Number, {"index", "int64", "", "", "publication index at the source"},
+                       {"value", "double", "m", "world", "the number"});
 KESTREL_MESSAGE(kestrel::test::Blob, "test.Blob", "an opaque block of bytes");

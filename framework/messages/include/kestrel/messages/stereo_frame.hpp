@@ -29,3 +29,15 @@ struct StereoFrame {
 
 KESTREL_MESSAGE(kestrel::msg::StereoFrame, "kestrel.StereoFrame",
                 "rectified left and right images, capture stamp and calibration");
+KESTREL_MESSAGE_FIELDS(kestrel::msg::StereoFrame,
+                       {"stamp", "Time", "ns", "", "capture time"},
+                       {"frame_index", "uint64", "", "", "count of frames from this camera, from 0"},
+                       {"left", "cv::Mat", "", "", "rectified left image, CV_8UC1 (grey) or CV_8UC3 (BGR)"},
+                       {"right", "cv::Mat", "", "", "rectified right image, same size and type as left"},
+                       {"calibration.width", "int", "px", "", "image width"},
+                       {"calibration.height", "int", "px", "", "image height"},
+                       {"calibration.fx", "double", "px", "", "horizontal focal length"},
+                       {"calibration.fy", "double", "px", "", "vertical focal length"},
+                       {"calibration.cx", "double", "px", "", "principal point, column"},
+                       {"calibration.cy", "double", "px", "", "principal point, row"},
+                       {"calibration.baseline_m", "double", "m", "", "distance between the optical centres"});

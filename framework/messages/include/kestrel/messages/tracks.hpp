@@ -40,3 +40,14 @@ struct Tracks {
 
 KESTREL_MESSAGE(kestrel::msg::Tracks, "kestrel.Tracks",
                 "tracks with id, age, hits, misses, state, covariance and the selected target");
+KESTREL_MESSAGE_FIELDS(kestrel::msg::Tracks,
+                       {"stamp", "Time", "ns", "", "capture time of the detections of this update"},
+                       {"frame", "string", "", "", "frame of the states: \"camera\""},
+                       {"items", "vector<Track>", "", "", "the published (confirmed) tracks"},
+                       {"items[].id", "uint64", "", "", "unique over the run, never reused"},
+                       {"items[].age", "int", "frames", "", "since the track's birth"},
+                       {"items[].hits", "int", "frames", "", "with an associated detection"},
+                       {"items[].misses", "int", "frames", "", "consecutive ones without a detection"},
+                       {"items[].state", "Eigen::VectorXd", "m, m/s, m/s^2", "in frame", "filter state; constant acceleration: [x y z vx vy vz ax ay az]"},
+                       {"items[].covariance", "Eigen::MatrixXd", "squares of the state's units", "in frame", "state covariance, same order as state"},
+                       {"selected_id", "optional<uint64>", "", "", "id of the target to aim at, if any"});
