@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include <kestrel/messages/actuator_command.hpp>
+#include <kestrel/messages/attitude_target.hpp>
 #include <kestrel/messages/detections.hpp>
 #include <kestrel/messages/ground_truth.hpp>
 #include <kestrel/messages/point_cloud.hpp>
@@ -45,7 +46,8 @@ TEST(MessageReference, EveryInTreeMessageDeclaresItsFieldsAndIsDocumented) {
   for (const MessageInfo& info :
        {message_info<msg::StereoFrame>(), message_info<msg::PointCloud>(), message_info<msg::Detections>(),
         message_info<msg::Tracks>(), message_info<msg::GroundTruth>(), message_info<msg::VehicleState>(),
-        message_info<msg::TrajectorySetpoint>(), message_info<msg::ActuatorCommand>()})
+        message_info<msg::TrajectorySetpoint>(), message_info<msg::ActuatorCommand>(),
+        message_info<msg::AttitudeTarget>()})
     types[info.name] = info;
   PluginHost host;
   host.load_search_path();

@@ -1,0 +1,93 @@
+#include "lee_position_control.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <kestrel/vehicle/so3.hpp>
+
+namespace kestrel::control {
+
+LeePositionControl::LeePositionControl(vehicle::Multirotor vehicle, LeeGains gains, double gravity,
+                                       double max_tilt_rad)
+    : vehicle_(std::move(vehicle)), gains_(std::move(gains)), gravity_(gravity), max_tilt_rad_(max_tilt_rad) {
+  // Minimum-norm squared speeds for a wrench: the right pseudo-inverse of the allocation, computed
+  // once from the rotor configuration.
+  allocation_inverse_ = vehicle_.wrench_matrix().completeOrthogonalDecomposition().pseudoInverse();
+}
+
+Eigen::Matrix3d LeePositionControl::desired_attitude(const Eigen::Vector3d& force, double yaw) {
+  const Eigen::Vector3d b3 = force.normalized();
+  const Eigen::Vector3d heading(std::cos(yaw), std::sin(yaw), 0.0);
+  Eigen::Vector3d b2 = b3.cross(heading);
+  if (b2.norm() < 1e-9) b2 = b3.cross(Eigen::Vector3d::UnitX());  // thrust along the heading: any b2
+  b2.normalize();
+  Eigen::Matrix3d r;
+  r.col(0) = b2.cross(b3);
+  r.col(1) = b2;
+  r.col(2) = b3;
+  return r;
+}
+
+Eigen::Vector3d LeePositionControl::attitude_error(const Eigen::Matrix3d& desired, const Eigen::Matrix3d& actual) {
+  return 0.5 * vehicle::vee(desired.transpose() * actual - actual.transpose() * desired);
+}
+
+Eigen::VectorXd LeePositionControl::allocate(const Eigen::Vector3d& torque, double thrust, bool* saturated) const {
+  Eigen::Vector4d wrench;
+  wrench << torque, thrust;
+  const Eigen::VectorXd squared = allocation_inverse_ * wrench;
+  const double max = vehicle_.max_rotor_speed_rad_s;
+  Eigen::VectorXd speeds(squared.size());
+  bool clipped = false;
+  for (Eigen::Index i = 0; i < squared.size(); ++i) {
+    const double s = std::sqrt(std::max(squared(i), 0.0));
+    clipped = clipped || squared(i) < 0.0 || s > max;
+    speeds(i) = std::min(s, max);
+  }
+  if (saturated) *saturated = clipped;
+  return speeds;
+}
+
+LeeCommand LeePositionControl::compute(const msg::TrajectorySetpoint& sp, const msg::VehicleState& state) const {
+  LeeCommand out;
+  const double m = vehicle_.mass_kg;
+  const Eigen::Vector3d e3 = Eigen::Vector3d::UnitZ();
+  // Translational law: the force that drives the position and velocity errors down, holds the
+  // vehicle against gravity and feeds the desired acceleration forward.
+  const Eigen::Vector3d ex = state.position - sp.position;
+  const Eigen::Vector3d ev = state.velocity - sp.velocity;
+  Eigen::Vector3d force =
+      -gains_.position.cwiseProduct(ex) - gains_.velocity.cwiseProduct(ev) + m * gravity_ * e3 + m * sp.acceleration;
+  // A multirotor cannot pull down, and must not tilt past max_tilt: keep some upward force and
+  // shorten the horizontal part.
+  bool limited = false;
+  const double min_up = 0.1 * m * gravity_;
+  if (force.z() < min_up) {
+    force.z() = min_up;
+    limited = true;
+  }
+  const double horizontal = force.head<2>().norm(), max_horizontal = force.z() * std::tan(max_tilt_rad_);
+  if (horizontal > max_horizontal) {
+    force.head<2>() *= max_horizontal / horizontal;
+    limited = true;
+  }
+  out.force_world = force;
+
+  const Eigen::Matrix3d r = state.orientation.toRotationMatrix();
+  out.attitude = desired_attitude(force, sp.yaw);
+  out.thrust_n = force.dot(r.col(2));  // what the current body z can deliver of it
+
+  // Rotational law: attitude and body-rate errors, with the gyroscopic term cancelled.
+  out.body_rates = Eigen::Vector3d(0.0, 0.0, sp.yaw_rate);
+  out.attitude_error = attitude_error(out.attitude, r);
+  out.rate_error = state.angular_velocity - r.transpose() * out.attitude * out.body_rates;
+  const Eigen::Vector3d momentum = vehicle_.inertia_kg_m2.cwiseProduct(state.angular_velocity);
+  out.torque_nm = -gains_.attitude.cwiseProduct(out.attitude_error) -
+                  gains_.angular_rate.cwiseProduct(out.rate_error) + state.angular_velocity.cross(momentum);
+
+  bool clipped = false;
+  out.rotor_speeds = allocate(out.torque_nm, out.thrust_n, &clipped);
+  out.saturated = limited || clipped;
+  return out;
+}
+
+}  // namespace kestrel::control
