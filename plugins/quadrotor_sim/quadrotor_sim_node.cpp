@@ -120,7 +120,9 @@ class QuadrotorSimNode final : public Node {
                             {"distance_m", distance_m_},
                             {"max_speed_m_s", max_speed_},
                             {"max_tilt_deg", max_tilt_deg_},
-                            {"touchdowns", touchdowns_}},
+                            {"touchdowns", touchdowns_},
+                            {"final_position_m",
+                             {{"x", state_.position.x()}, {"y", state_.position.y()}, {"z", state_.position.z()}}}},
                            fmt::format("{:.1f} s in the air, {:.1f} m flown, top speed {:.2f} m/s, largest tilt "
                                        "{:.1f} deg, {} touchdown(s).\n",
                                        flight_time_s_, distance_m_, max_speed_, max_tilt_deg_, touchdowns_));
@@ -129,6 +131,7 @@ class QuadrotorSimNode final : public Node {
     ctx.describe_quantity(id + ".max_speed_m_s", "m/s");
     ctx.describe_quantity(id + ".max_tilt_deg", "deg");
     ctx.describe_quantity(id + ".touchdowns");
+    ctx.describe_quantity(id + ".final_position_m", "m");
   }
 
  private:

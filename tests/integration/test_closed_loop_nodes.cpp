@@ -1,0 +1,75 @@
+// The simulated hunter and its controller as nodes in a graph (graphs/hover_step.yaml): fault
+// handling, reproducibility, and errors that name the node.
+#include <gmock/gmock.h>
+
+#include <cmath>
+
+#include "kestrel/runtime/graph.hpp"
+#include "kestrel/runtime/plugin_host.hpp"
+#include "kestrel/runtime/run.hpp"
+
+using namespace kestrel;
+
+namespace {
+
+RunResult fly(const std::vector<std::string>& overrides, std::optional<std::uint64_t> seed = {}) {
+  static PluginHost* host = [] {
+    auto* h = new PluginHost();
+    h->load_search_path();
+    return h;
+  }();
+  auto built = build_graph(GraphSource::from_file(KESTREL_SOURCE_DIR "/graphs/hover_step.yaml"), host->registry(),
+                           overrides);
+  EXPECT_TRUE(built.graph) << built.diagnostics.str();
+  if (!built.graph) return {};
+  RunOptions options;
+  options.seed = seed;
+  return run_graph(*built.graph, host->registry(), options);
+}
+
+double distance_to(const nlohmann::json& p, double x, double y, double z) {
+  return std::hypot(p.at("x").get<double>() - x, p.at("y").get<double>() - y, p.at("z").get<double>() - z);
+}
+
+}  // namespace
+
+TEST(ClosedLoop, NonFiniteSetpointsNeverReachTheMotorsTheHunterHovers) {
+  // One second of NaN setpoints, after the step: the controller holds the last good setpoint.
+  // The simulator refuses a non-finite command, so a completed run proves none got through.
+  const RunResult r = fly({"setpoint.fault_at_s=8.0", "setpoint.fault_for_s=1.0"});
+  ASSERT_EQ(r.outcome, RunOutcome::completed) << (r.errors.empty() ? "" : r.errors.front());
+  const auto& c = r.report.at("controller");
+  EXPECT_EQ(c.at("bad_setpoints"), 100);  // 1 s at the controller's 100 Hz odometry rate
+  EXPECT_EQ(c.at("faults"), 100);
+  EXPECT_EQ(r.report.at("hunter").at("touchdowns"), 0);
+  EXPECT_LT(distance_to(r.report.at("hunter").at("final_position_m"), 1.0, 0.0, 2.0), 0.02);
+}
+
+TEST(ClosedLoop, CutOnFaultStopsTheMotors) {
+  const RunResult r = fly({"setpoint.fault_at_s=8.0", "setpoint.fault_for_s=4.0", "controller.on_fault=cut"});
+  ASSERT_EQ(r.outcome, RunOutcome::completed) << (r.errors.empty() ? "" : r.errors.front());
+  EXPECT_GT(r.report.at("controller").at("bad_setpoints").get<int>(), 0);
+  // Motors stopped 2 m up: it falls and lands (in 0.64 s), and stays down.
+  EXPECT_EQ(r.report.at("hunter").at("touchdowns"), 1);
+  EXPECT_NEAR(r.report.at("hunter").at("final_position_m").at("z").get<double>(), 0.0, 1e-12);
+}
+
+TEST(ClosedLoop, SameSeedSameFlightBitForBit) {
+  const std::vector<std::string> windy = {"hunter.gust_std_m_s=1.0", "hunter.wind_m_s=[1.0, 0.5, 0.0]",
+                                          "hunter.position_noise_m=0.02", "hunter.attitude_noise_deg=0.5"};
+  const RunResult a = fly(windy, 7), b = fly(windy, 7), c = fly(windy, 8);
+  ASSERT_EQ(a.outcome, RunOutcome::completed);
+  EXPECT_EQ(a.report.at("hunter"), b.report.at("hunter"));  // exact doubles
+  EXPECT_EQ(a.report.at("controller"), b.report.at("controller"));
+  EXPECT_NE(a.report.at("hunter").at("final_position_m"), c.report.at("hunter").at("final_position_m"));
+  // Gusts of 1 m/s push it around, but the controller keeps it near the point.
+  EXPECT_LT(distance_to(a.report.at("hunter").at("final_position_m"), 1.0, 0.0, 2.0), 0.3);
+}
+
+TEST(ClosedLoop, ACommandForAnotherVehicleIsAnErrorNamingTheSimulator) {
+  const RunResult r = fly({"controller.rotor_count=4"});
+  EXPECT_EQ(r.outcome, RunOutcome::failed);
+  ASSERT_FALSE(r.errors.empty());
+  EXPECT_THAT(r.errors.front(), ::testing::HasSubstr("hunter"));
+  EXPECT_THAT(r.errors.front(), ::testing::HasSubstr("command has 4 rotor speeds; this vehicle has 6 rotors"));
+}
