@@ -1,6 +1,7 @@
 // The `intruder` node: a simulated intruder drone flying a chosen trajectory, published as
 // ground truth at a fixed rate.
 #include <kestrel/messages/ground_truth.hpp>
+#include <kestrel/messages/net_capture.hpp>
 #include <kestrel/plugin.hpp>
 
 #include "trajectory.hpp"
@@ -28,11 +29,13 @@ struct IntruderConfig {
   double max_speed_mps = 3.0;
   std::string file;
   AtEnd at_end = AtEnd::repeat;
+  double ground_z_m = 0.0;
 };
 
 class IntruderNode final : public Node {
  public:
   static constexpr Input<msg::GroundTruth> kAlso{"also"};
+  static constexpr Input<msg::NetCapture> kCaptured{"captured"};
   static constexpr Output<msg::GroundTruth> kTruth{"truth"};
 
   static NodeSpec spec() {
@@ -73,6 +76,7 @@ class IntruderNode final : public Node {
     c.param("file", &C::file).describe("file: CSV of t,x,y,z (s, world m)");
     c.choice("at_end", &C::at_end, {{"hold", C::AtEnd::hold}, {"repeat", C::AtEnd::repeat}})
         .describe("line and file: after the end, hold the last point or go again (line: back and forth)");
+    c.param("ground_z_m", &C::ground_z_m).with_unit("m").describe("height of the ground a caught intruder falls to");
     c.rule("file is set when shape = file", {"shape", "file"},
            [](const C& k) { return k.shape != C::Shape::file || !k.file.empty(); });
     return NodeSpec("intruder",
@@ -84,6 +88,8 @@ class IntruderNode final : public Node {
             "republishes ground truth in its own frame.")
         .input(kAlso, "other intruders' truth, published together with this one (chain intruders to fly several)",
                {.trigger = Trigger::latest, .optional = true})
+        .input(kCaptured, "a net caught an intruder: if it is this one, it stops flying and falls to the ground",
+               {.trigger = Trigger::latest, .optional = true})
         .output(kTruth, "the intruder's true state (and those arriving on `also`)")
         .config(std::move(c));
   }
@@ -91,7 +97,7 @@ class IntruderNode final : public Node {
   explicit IntruderNode(NodeInit& init) : IntruderNode(init, init.config<IntruderConfig>()) {}
 
   void tick(Context& ctx) override {
-    const State s = trajectory_->at(start_ + to_seconds(ctx.now()));
+    const State s = caught(ctx) ? falling(to_seconds(ctx.now())) : trajectory_->at(start_ + to_seconds(ctx.now()));
     msg::GroundTruth truth;
     truth.stamp = ctx.now();
     msg::GroundTruthObject object;
@@ -119,6 +125,7 @@ class IntruderNode final : public Node {
   IntruderNode(NodeInit& init, const IntruderConfig& cfg)
       : id_(static_cast<std::uint64_t>(cfg.object_id)),
         start_(cfg.start_s),
+        ground_z_(cfg.ground_z_m),
         camera_(geometry::level_camera(cfg.camera_position_m, cfg.camera_yaw_deg * M_PI / 180.0)) {
     const bool repeat = cfg.at_end == IntruderConfig::AtEnd::repeat;
     switch (cfg.shape) {
@@ -140,8 +147,30 @@ class IntruderNode final : public Node {
     init.set_rate(cfg.rate_hz);
   }
 
+  // Caught in a net (a capture for this id has arrived): tangled, it drops from where it was caught.
+  bool caught(Context& ctx) {
+    if (!caught_at_)
+      if (const auto capture = ctx.get(kCaptured); capture && capture->object_id == id_) {
+        caught_at_ = to_seconds(capture->stamp);
+        caught_where_ = capture->position_world;
+      }
+    return caught_at_.has_value();
+  }
+
+  State falling(double t) const {
+    const double tau = std::max(0.0, t - *caught_at_);
+    State s;
+    s.position = caught_where_;
+    s.position.z() = std::max(ground_z_, caught_where_.z() - 0.5 * 9.81 * tau * tau);
+    s.velocity = Eigen::Vector3d(0.0, 0.0, s.position.z() > ground_z_ ? -9.81 * tau : 0.0);
+    return s;
+  }
+
   std::uint64_t id_;
   double start_;
+  double ground_z_;
+  std::optional<double> caught_at_;
+  Eigen::Vector3d caught_where_ = Eigen::Vector3d::Zero();
   geometry::CameraPose camera_;
   std::unique_ptr<Trajectory> trajectory_;
 };

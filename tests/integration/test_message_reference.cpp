@@ -10,6 +10,8 @@
 #include <kestrel/messages/attitude_target.hpp>
 #include <kestrel/messages/detections.hpp>
 #include <kestrel/messages/ground_truth.hpp>
+#include <kestrel/messages/net_capture.hpp>
+#include <kestrel/messages/net_fire.hpp>
 #include <kestrel/messages/point_cloud.hpp>
 #include <kestrel/messages/stereo_frame.hpp>
 #include <kestrel/messages/tracks.hpp>
@@ -47,7 +49,7 @@ TEST(MessageReference, EveryInTreeMessageDeclaresItsFieldsAndIsDocumented) {
        {message_info<msg::StereoFrame>(), message_info<msg::PointCloud>(), message_info<msg::Detections>(),
         message_info<msg::Tracks>(), message_info<msg::GroundTruth>(), message_info<msg::VehicleState>(),
         message_info<msg::TrajectorySetpoint>(), message_info<msg::ActuatorCommand>(),
-        message_info<msg::AttitudeTarget>()})
+        message_info<msg::AttitudeTarget>(), message_info<msg::NetFire>(), message_info<msg::NetCapture>()})
     types[info.name] = info;
   PluginHost host;
   host.load_search_path();

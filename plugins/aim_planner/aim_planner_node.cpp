@@ -1,0 +1,256 @@
+// The `aim_planner` node: from the tracker's selected target (camera frame) and the hunter's
+// odometry to the setpoint that puts the target where the net opens, x_E^d, and the order to fire
+// once the aim has held there. Takes off to takeoff_altitude_m and waits while nothing is
+// tracked; after losing the target it flies on towards where it was for target_timeout_s, then
+// holds (or searches by turning slowly) until the tracker selects a target again. A selected
+// track near the ground is clutter, never a target.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <kestrel/geometry/frames.hpp>
+#include <kestrel/messages/net_fire.hpp>
+#include <kestrel/messages/tracks.hpp>
+#include <kestrel/messages/trajectory_setpoint.hpp>
+#include <kestrel/messages/vehicle_state.hpp>
+#include <kestrel/plugin.hpp>
+#include <kestrel/tracking/kalman_filter.hpp>
+#include <optional>
+
+#include "aim_law.hpp"
+
+namespace kestrel::aim {
+
+struct AimPlannerConfig {
+  enum class WhenLost { hold, search };
+  Eigen::Vector3d aim_point_m{0.0, 1.0, 2.0};
+  Eigen::Vector3d camera_offset_m{0.1, 0.0, 0.0};
+  double gain_1_s = 1.0;
+  double max_speed_m_s = 5.0;
+  double max_acceleration_m_s2 = 4.0;
+  double max_yaw_rate_deg_s = 90.0;
+  double takeoff_altitude_m = 2.0;
+  double min_altitude_m = 0.5;
+  double min_target_height_m = 0.5;
+  double target_timeout_s = 1.0;
+  double target_q = 1.0;
+  double target_r = 1.0;
+  WhenLost when_lost = WhenLost::hold;
+  double search_yaw_rate_deg_s = 20.0;
+  double capture_radius_m = 0.5;
+  double dwell_s = 0.5;
+  double cooldown_s = 3.0;
+};
+
+class AimPlannerNode final : public Node {
+ public:
+  static constexpr Input<msg::Tracks> kTracks{"tracks"};
+  static constexpr Input<msg::VehicleState> kOdometry{"odometry"};
+  static constexpr Output<msg::TrajectorySetpoint> kSetpoint{"setpoint"};
+  static constexpr Output<msg::NetFire> kFire{"fire"};
+
+  static NodeSpec spec() {
+    using C = AimPlannerConfig;
+    ConfigSpec<C> c;
+    c.param("aim_point_m", &C::aim_point_m)
+        .with_unit("m")
+        .range(-50.0, 50.0)
+        .describe("x_E^d: where the net opens, in the camera frame (x right, y down, z forward); the paper's [0, 1, 2]");
+    c.param("camera_offset_m", &C::camera_offset_m)
+        .with_unit("m")
+        .range(-10.0, 10.0)
+        .describe("the camera's position in the body frame (as the camera node has it)");
+    c.param("gain_1_s", &C::gain_1_s).with_unit("1/s").range(0.01, 100.0).describe("pull of the setpoint towards the aim pose");
+    c.param("max_speed_m_s", &C::max_speed_m_s).with_unit("m/s").range(0.1, 100.0).describe("setpoint speed limit");
+    c.param("max_acceleration_m_s2", &C::max_acceleration_m_s2)
+        .with_unit("m/s^2")
+        .range(0.1, 100.0)
+        .describe("setpoint acceleration limit");
+    c.param("max_yaw_rate_deg_s", &C::max_yaw_rate_deg_s)
+        .with_unit("deg/s")
+        .range(1.0, 1000.0)
+        .describe("setpoint yaw-rate limit");
+    c.param("takeoff_altitude_m", &C::takeoff_altitude_m)
+        .with_unit("m")
+        .range(0.0, 1000.0)
+        .describe("height to climb to and wait at before the first target");
+    c.param("min_altitude_m", &C::min_altitude_m)
+        .with_unit("m")
+        .range(0.0, 1000.0)
+        .describe("the setpoint never goes lower, whatever the target does");
+    c.param("min_target_height_m", &C::min_target_height_m)
+        .with_unit("m")
+        .range(-1000.0, 1000.0)
+        .describe("a selected track lower than this (world z) is ground clutter, not a target");
+    c.param("target_timeout_s", &C::target_timeout_s)
+        .with_unit("s")
+        .range(0.0, 3600.0)
+        .describe("after losing the target, keep flying towards it this long, then hold or search");
+    c.param("target_q", &C::target_q)
+        .with_unit("m^2/s^5")
+        .range(0.0, 1e6)
+        .describe("world-frame target estimate: process noise of its constant-acceleration Kalman filter");
+    c.param("target_r", &C::target_r)
+        .with_unit("m^2")
+        .range(1e-9, 1e6)
+        .describe("world-frame target estimate: measurement noise");
+    c.choice("when_lost", &C::when_lost, {{"hold", C::WhenLost::hold}, {"search", C::WhenLost::search}})
+        .describe("after the timeout: hold position and heading, or hold position and turn slowly");
+    c.param("search_yaw_rate_deg_s", &C::search_yaw_rate_deg_s)
+        .with_unit("deg/s")
+        .range(-360.0, 360.0)
+        .describe("search: turn rate");
+    c.param("capture_radius_m", &C::capture_radius_m)
+        .with_unit("m")
+        .range(0.01, 10.0)
+        .describe("fire when |x_E^d - x_E| stays below this (the net's capture radius)");
+    c.param("dwell_s", &C::dwell_s).with_unit("s").range(0.0, 60.0).describe("how long the aim must hold before firing");
+    c.param("cooldown_s", &C::cooldown_s).with_unit("s").range(0.0, 3600.0).describe("least time between two shots");
+    c.rule("min_altitude_m <= takeoff_altitude_m", {"min_altitude_m", "takeoff_altitude_m"},
+           [](const C& k) { return k.min_altitude_m <= k.takeoff_altitude_m; });
+    return NodeSpec("aim_planner", "Aims the hunter so the target sits where the net opens, and fires")
+        .details(
+            "The paper's section 2.4: drives e_x = x_E^d - x_E to zero with the hunter's position along its heading, "
+            "its height and its yaw (which keeps the target in view), through a setpoint limited in speed, "
+            "acceleration and yaw rate, with the target's velocity fed forward. One setpoint per tracks message. "
+            "Fires when the aim error stays within capture_radius_m for dwell_s, at most once per cooldown_s.")
+        .input(kTracks, "the tracker's tracks; the selected one is the target (camera frame)")
+        .input(kOdometry, "the hunter's state", {.trigger = Trigger::latest})
+        .output(kSetpoint, "where the hunter should be (world)")
+        .output(kFire, "the order to fire the net")
+        .config(std::move(c));
+  }
+
+  explicit AimPlannerNode(NodeInit& init) : cfg_(init.config<AimPlannerConfig>()) {}
+
+  void process(Context& ctx) override {
+    const auto tracks = ctx.get(kTracks);
+    const auto hunter = ctx.get(kOdometry);
+    if (!hunter) return;  // nothing to aim from yet
+    const double t = to_seconds(tracks->stamp);
+    const double dt = last_t_ ? std::max(0.0, t - *last_t_) : 0.0;
+    last_t_ = t;
+    ++frames_;
+    if (!reference_) start(*hunter);
+
+    // Nothing is engaged before the take-off height is reached: near the ground the camera sees
+    // the ground at grazing angles, and whatever is tracked there is not a flying target.
+    if (!armed_ && hunter->position.z() >= takeoff_.position.z() - 0.3) armed_ = true;
+    const geometry::CameraPose camera =
+        geometry::camera_on_body(hunter->position, hunter->orientation, cfg_.camera_offset_m);
+    const msg::Track* target = armed_ ? tracks->selected() : nullptr;
+    if (target && camera.to_world(target->position()).z() < cfg_.min_target_height_m) {
+      ++ground_frames_;
+      target = nullptr;
+    }
+    std::optional<Eigen::Vector3d> error;
+    if (estimate_) estimate_->predict(dt);
+    if (target) {
+      const Eigen::Vector3d in_camera = target->position();
+      // The target is estimated again in the world frame, from its positions there: its velocity
+      // in the camera frame would include the hunter's own motion, and feeding that forward would
+      // chase the hunter's tail.
+      const Eigen::Vector3d intruder = camera.to_world(in_camera);
+      if (!estimate_ || target->id != target_id_) {
+        estimate_.emplace(intruder, tracking::KalmanConfig{cfg_.target_q, cfg_.target_r, 1.0});
+        target_id_ = target->id;
+      } else {
+        estimate_->update(intruder);
+      }
+      const Eigen::VectorXd x = estimate_->state();
+      goal_ = aim_pose(x.head<3>(), hunter->position, yaw_of(*hunter), cfg_.aim_point_m, cfg_.camera_offset_m);
+      goal_->position.z() = std::max(goal_->position.z(), cfg_.min_altitude_m);
+      goal_velocity_ = x.segment<3>(3);
+      last_seen_ = t;
+      error = cfg_.aim_point_m - in_camera;
+      ++target_frames_;
+      squared_error_ += error->squaredNorm();
+    }
+
+    if (goal_ && (target || t - last_seen_ <= cfg_.target_timeout_s)) {
+      reference_->advance(*goal_, goal_velocity_, dt);  // a short loss: keep going where it was heading
+    } else if (goal_) {
+      if (!holding_) ++holds_;
+      holding_ = true;
+      const bool search = cfg_.when_lost == AimPlannerConfig::WhenLost::search;
+      reference_->hold(dt, search ? cfg_.search_yaw_rate_deg_s * M_PI / 180.0 : 0.0);
+    } else {
+      reference_->advance(takeoff_, Eigen::Vector3d::Zero(), dt);  // no target yet: climb and wait
+    }
+    if (target) holding_ = false;
+
+    msg::TrajectorySetpoint sp;
+    sp.stamp = tracks->stamp;
+    sp.position = reference_->position();
+    sp.velocity = reference_->velocity();
+    sp.acceleration = reference_->acceleration();
+    sp.yaw = reference_->yaw();
+    sp.yaw_rate = reference_->yaw_rate();
+    ctx.publish(kSetpoint, std::move(sp));
+
+    if (fire_.update(t, error ? &*error : nullptr)) {
+      ++fire_count_;
+      if (!first_fire_) first_fire_ = t;
+      ctx.log().info("fire at t = {:.2f} s: target {}, aim error {:.2f} m", t, target->id, error->norm());
+      ctx.publish(kFire, msg::NetFire{tracks->stamp, target->id, *error});
+    }
+  }
+
+  void finish(Context& ctx) override {
+    const std::string id = ctx.id();
+    const nlohmann::json rmse =
+        target_frames_ ? nlohmann::json(std::sqrt(squared_error_ / static_cast<double>(target_frames_))) : nullptr;
+    const nlohmann::json first = first_fire_ ? nlohmann::json(*first_fire_) : nullptr;
+    ctx.set_report_section(id,
+                           {{"frames", frames_},
+                            {"target_frames", target_frames_},
+                            {"aim_rmse_m", rmse},
+                            {"fire_count", fire_count_},
+                            {"time_to_first_fire_s", first},
+                            {"holds", holds_},
+                            {"ground_frames", ground_frames_}},
+                           fmt::format("Target in {} of {} frames; aim error (from the tracks) {} m RMS; {} shot(s), "
+                                       "the first at {}; held {} time(s) after losing the target.\n",
+                                       target_frames_, frames_, rmse.is_null() ? "n/a" : fmt::format("{:.3f}", rmse.get<double>()),
+                                       fire_count_, first.is_null() ? "n/a" : fmt::format("{:.2f} s", first.get<double>()),
+                                       holds_));
+    ctx.describe_quantity(id + ".frames");
+    ctx.describe_quantity(id + ".target_frames");
+    ctx.describe_metric(id + ".aim_rmse_m", "m", false);
+    ctx.describe_quantity(id + ".fire_count");
+    ctx.describe_metric(id + ".time_to_first_fire_s", "s", false);
+    ctx.describe_metric(id + ".holds", "", false);
+    ctx.describe_quantity(id + ".ground_frames");
+  }
+
+ private:
+  static double yaw_of(const msg::VehicleState& s) {
+    const Eigen::Vector3d forward = s.orientation * Eigen::Vector3d::UnitX();
+    return std::atan2(forward.y(), forward.x());
+  }
+
+  void start(const msg::VehicleState& hunter) {
+    AimReference::Limits limits{cfg_.gain_1_s, cfg_.max_speed_m_s, cfg_.max_acceleration_m_s2,
+                                cfg_.max_yaw_rate_deg_s * M_PI / 180.0};
+    reference_.emplace(limits, hunter.position, yaw_of(hunter));
+    takeoff_.position = hunter.position;
+    takeoff_.position.z() = std::max(hunter.position.z(), cfg_.takeoff_altitude_m);
+    takeoff_.yaw = yaw_of(hunter);
+  }
+
+  AimPlannerConfig cfg_;
+  std::optional<AimReference> reference_;
+  FireTrigger fire_{cfg_.capture_radius_m, cfg_.dwell_s, cfg_.cooldown_s};
+  AimPose takeoff_;
+  std::optional<AimPose> goal_;
+  std::optional<tracking::KalmanTrack> estimate_;
+  std::uint64_t target_id_ = 0;
+  Eigen::Vector3d goal_velocity_ = Eigen::Vector3d::Zero();
+  std::optional<double> last_t_, first_fire_;
+  double last_seen_ = 0.0;
+  bool holding_ = false, armed_ = false;
+  std::uint64_t frames_ = 0, target_frames_ = 0, fire_count_ = 0, holds_ = 0, ground_frames_ = 0;
+  double squared_error_ = 0.0;
+};
+KESTREL_REGISTER_NODE(AimPlannerNode)
+
+}  // namespace kestrel::aim

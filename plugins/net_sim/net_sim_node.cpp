@@ -1,0 +1,201 @@
+// The `net_sim` node: the simulated net and the judge of the intercept. Each `fire` order
+// launches a net from the hunter's true pose (net_model.hpp); an intruder whose true centre
+// comes within the open net's radius is caught, announced on `capture` (the intruder then
+// falls). From the hunter's true state and the intruder's ground truth it also measures the true
+// aim error, x_E^d - x_E, and reports the closed-loop figures under `control` with plots of the
+// flight and of the aim.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <kestrel/geometry/frames.hpp>
+#include <kestrel/messages/ground_truth.hpp>
+#include <kestrel/messages/net_capture.hpp>
+#include <kestrel/messages/net_fire.hpp>
+#include <kestrel/messages/vehicle_state.hpp>
+#include <kestrel/plot/line_plot.hpp>
+#include <kestrel/plugin.hpp>
+#include <optional>
+
+#include "net_model.hpp"
+
+namespace kestrel::net {
+
+struct NetSimConfig {
+  std::int64_t object_id = 1;
+  Eigen::Vector3d camera_offset_m{0.1, 0.0, 0.0};
+  Eigen::Vector3d open_point_m{0.0, 1.0, 2.0};
+  double flight_time_s = 0.4;
+  double radius_m = 0.6;
+  double open_for_s = 0.3;
+  double gravity_m_s2 = 9.81;
+  std::string section = "control";
+  std::int64_t max_samples = 100000;
+};
+
+class NetSimNode final : public Node {
+ public:
+  static constexpr Input<msg::NetFire> kFire{"fire"};
+  static constexpr Input<msg::VehicleState> kHunter{"hunter"};
+  static constexpr Input<msg::GroundTruth> kTruth{"truth"};
+  static constexpr Output<msg::NetCapture> kCapture{"capture"};
+
+  static NodeSpec spec() {
+    using C = NetSimConfig;
+    ConfigSpec<C> c;
+    c.param("object_id", &C::object_id).at_least(0).describe("ground-truth id of the intruder to catch");
+    c.param("camera_offset_m", &C::camera_offset_m)
+        .with_unit("m")
+        .range(-10.0, 10.0)
+        .describe("camera and launcher position in the hunter's body frame");
+    c.param("open_point_m", &C::open_point_m)
+        .with_unit("m")
+        .range(-50.0, 50.0)
+        .describe("where the net is widest, in the camera frame at launch (the paper's [0, 1, 2])");
+    c.param("flight_time_s", &C::flight_time_s).with_unit("s").range(0.05, 10.0).describe("launch to widest opening");
+    c.param("radius_m", &C::radius_m).with_unit("m").range(0.01, 10.0).describe("radius of the open net");
+    c.param("open_for_s", &C::open_for_s).with_unit("s").range(0.0, 10.0).describe("how long it stays open");
+    c.param("gravity_m_s2", &C::gravity_m_s2).with_unit("m/s^2").range(0.0, 100.0).describe("gravity on the net");
+    c.param("section", &C::section).describe("report section of the closed-loop figures");
+    c.param("max_samples", &C::max_samples).range(2, 10000000).describe("samples kept for the plots (memory bound)");
+    return NodeSpec("net_sim", "Simulated net: flies, opens, catches; judges the intercept")
+        .details(
+            "A fire order launches the net on a parabola that opens at open_point_m (camera frame at launch) after "
+            "flight_time_s; an intruder within radius_m of its centre while open is caught. Reports control.{aim_rmse_m, "
+            "time_to_align_s, time_to_first_fire_s, fire_count, captured, time_to_capture_s} from the true states, "
+            "and draws the flight (top view, heights) and the aim error with the shots.")
+        .input(kFire, "orders to fire")
+        .input(kHunter, "the hunter's true state", {.trigger = Trigger::latest})
+        .input(kTruth, "the intruders' ground truth")
+        .output(kCapture, "the intruder caught, once")
+        .config(std::move(c));
+  }
+
+  explicit NetSimNode(NodeInit& init) : NetSimNode(init.config<NetSimConfig>()) {}
+
+  void process(Context& ctx) override {
+    const auto hunter = ctx.get(kHunter);
+    if (!hunter) return;
+    const double t = to_seconds(ctx.now());
+    const geometry::CameraPose launcher =
+        geometry::camera_on_body(hunter->position, hunter->orientation, cfg_.camera_offset_m);
+    if (ctx.triggered_by(kFire)) {
+      shots_.push_back(model_.fire(t, launcher, hunter->velocity));
+      fire_times_.push_back(t);
+      if (!first_fire_) first_fire_ = t;
+      return;
+    }
+    const auto truth = ctx.get(kTruth);
+    const msg::GroundTruthObject* intruder = nullptr;
+    for (const auto& o : truth->objects)
+      if (o.id == static_cast<std::uint64_t>(cfg_.object_id)) intruder = &o;
+    if (!intruder) return;
+    const double tt = to_seconds(truth->stamp);
+    if (!captured_at_) {
+      const Eigen::Vector3d error = cfg_.open_point_m - launcher.to_camera(intruder->position_world);
+      if (!aligned_at_ && error.norm() <= cfg_.radius_m) aligned_at_ = tt;
+      if (aligned_at_) {
+        squared_error_ += error.squaredNorm();
+        ++aligned_samples_;
+      }
+      keep(tt, error.norm(), hunter->position, intruder->position_world);
+      for (const auto& shot : shots_)
+        if (model_.catches(shot, tt, intruder->position_world)) {
+          captured_at_ = tt;
+          ctx.log().info("intruder {} caught at t = {:.2f} s, ({:.2f}, {:.2f}, {:.2f}) m", intruder->id, tt,
+                         intruder->position_world.x(), intruder->position_world.y(), intruder->position_world.z());
+          ctx.publish(kCapture, msg::NetCapture{truth->stamp, intruder->id, intruder->position_world});
+          break;
+        }
+      std::erase_if(shots_, [&](const NetShot& s) { return model_.spent(s, tt); });
+    }
+  }
+
+  void finish(Context& ctx) override {
+    auto maybe = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(); };
+    std::optional<double> rmse;
+    if (aligned_samples_ > 0) rmse = std::sqrt(squared_error_ / static_cast<double>(aligned_samples_));
+    const std::string& s = cfg_.section;
+    auto text = [](const std::optional<double>& v, const char* unit) {
+      return v ? fmt::format("{:.2f} {}", *v, unit) : std::string("n/a");
+    };
+    ctx.set_report_section(
+        s,
+        {{"aim_rmse_m", maybe(rmse)},
+         {"time_to_align_s", maybe(aligned_at_)},
+         {"time_to_first_fire_s", maybe(first_fire_)},
+         {"fire_count", fire_times_.size()},
+         {"captured", captured_at_.has_value()},
+         {"time_to_capture_s", maybe(captured_at_)}},
+        fmt::format("{}. Aligned (true aim error within {:.2f} m) at {}; aim error from then on {} RMS; {} shot(s), "
+                    "the first at {}.\n",
+                    captured_at_ ? fmt::format("**Captured** at {:.2f} s", *captured_at_) : std::string("**Not captured**"),
+                    cfg_.radius_m, text(aligned_at_, "s"), text(rmse, "m"), fire_times_.size(), text(first_fire_, "s")));
+    ctx.describe_metric(s + ".aim_rmse_m", "m", false);
+    ctx.describe_metric(s + ".time_to_align_s", "s", false);
+    ctx.describe_metric(s + ".time_to_first_fire_s", "s", false);
+    ctx.describe_quantity(s + ".fire_count");
+    ctx.describe_metric(s + ".captured", "", true);
+    ctx.describe_metric(s + ".time_to_capture_s", "s", false);
+    if (ctx.keeps_artifacts() && t_.size() >= 2) {
+      ctx.add_artifact("intercept.png", plot::render_png(flight_panels(), 1000, 320),
+                       "hunter and intruder: top view and heights (world frame, true states)");
+      ctx.add_artifact("aim_error.png", plot::render_png({aim_panel()}, 1000, 320),
+                       "true aim error |x_E^d - x_E| against time, with the shots");
+    }
+  }
+
+ private:
+  explicit NetSimNode(const NetSimConfig& cfg)
+      : cfg_(cfg),
+        model_(NetParams{cfg.open_point_m, cfg.flight_time_s, cfg.radius_m, cfg.open_for_s, cfg.gravity_m_s2}) {}
+
+  void keep(double t, double error, const Eigen::Vector3d& hunter, const Eigen::Vector3d& intruder) {
+    if (static_cast<std::int64_t>(t_.size()) >= cfg_.max_samples) return;
+    t_.push_back(t);
+    error_.push_back(error);
+    hunter_.push_back(hunter);
+    intruder_.push_back(intruder);
+  }
+
+  std::vector<plot::Panel> flight_panels() const {
+    plot::Series hx{"hunter", {}, {}, plot::Series::Style::line, plot::palette(0), 2};
+    plot::Series ix{"intruder", {}, {}, plot::Series::Style::line, plot::palette(1), 2};
+    plot::Series hz = hx, iz = ix;
+    for (std::size_t i = 0; i < t_.size(); ++i) {
+      hx.x.push_back(hunter_[i].x());
+      hx.y.push_back(hunter_[i].y());
+      ix.x.push_back(intruder_[i].x());
+      ix.y.push_back(intruder_[i].y());
+      hz.x.push_back(t_[i]);
+      hz.y.push_back(hunter_[i].z());
+      iz.x.push_back(t_[i]);
+      iz.y.push_back(intruder_[i].z());
+    }
+    return {plot::Panel{"top view", "x [m]", "y [m]", {hx, ix}}, plot::Panel{"height", "t [s]", "z [m]", {hz, iz}}};
+  }
+
+  plot::Panel aim_panel() const {
+    plot::Series error{"|x_E^d - x_E|", t_, error_, plot::Series::Style::line, plot::palette(0), 2};
+    plot::Series radius{"net radius", {t_.front(), t_.back()}, {cfg_.radius_m, cfg_.radius_m},
+                        plot::Series::Style::line, plot::palette(7), 1};
+    plot::Series shots{"shots", fire_times_, std::vector<double>(fire_times_.size(), 0.0),
+                       plot::Series::Style::points, plot::palette(3), 6};
+    plot::Panel panel{"true aim error", "t [s]", "m", {error, radius, shots}};
+    if (captured_at_) panel.series.push_back({"capture", {*captured_at_}, {0.0}, plot::Series::Style::points,
+                                              plot::palette(2), 10});
+    return panel;
+  }
+
+  NetSimConfig cfg_;
+  NetModel model_;
+  std::vector<NetShot> shots_;
+  std::vector<double> fire_times_;
+  std::optional<double> first_fire_, aligned_at_, captured_at_;
+  double squared_error_ = 0.0;
+  std::uint64_t aligned_samples_ = 0;
+  std::vector<double> t_, error_;
+  std::vector<Eigen::Vector3d> hunter_, intruder_;
+};
+KESTREL_REGISTER_NODE(NetSimNode)
+
+}  // namespace kestrel::net

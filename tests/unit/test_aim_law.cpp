@@ -1,0 +1,110 @@
+// The aim law of the paper's section 2.4 and the parts around it: the aim pose, the limited
+// reference the controller follows, and the fire decision.
+#include <gmock/gmock.h>
+
+#include <cmath>
+#include <kestrel/geometry/frames.hpp>
+#include <random>
+
+#include "aim_law.hpp"
+
+using namespace kestrel;
+using namespace kestrel::aim;
+
+namespace {
+const Eigen::Vector3d kAim(0.0, 1.0, 2.0);  // x_E^d: 2 m ahead, 1 m below
+const Eigen::Vector3d kOffset(0.1, 0.0, 0.0);
+}  // namespace
+
+TEST(AimLaw, HunterTwoMetresBehindAndOneAboveFacingTheIntruder) {
+  const AimPose p = aim_pose({5.0, 0.0, 2.0}, {0.0, 0.0, 2.0}, 0.0, kAim, kOffset);
+  EXPECT_NEAR(p.yaw, 0.0, 1e-12);
+  EXPECT_TRUE(p.position.isApprox(Eigen::Vector3d(2.9, 0.0, 3.0), 1e-12));  // camera at (3, 0, 3)
+  const AimPose left = aim_pose({0.0, 5.0, 2.0}, {0.0, 0.0, 2.0}, 0.0, kAim, kOffset);
+  EXPECT_NEAR(left.yaw, std::atan2(5.0, -0.1), 1e-12);  // seen from the camera, 0.1 m ahead of the centre
+}
+
+TEST(AimLaw, FromTheAimPoseTheIntruderIsAtTheAimPoint) {
+  std::mt19937_64 random(3);
+  std::uniform_real_distribution<double> u(-8.0, 8.0);
+  for (int i = 0; i < 200; ++i) {
+    const Eigen::Vector3d intruder(u(random), u(random), 2.0 + 0.2 * u(random));
+    const Eigen::Vector3d hunter(u(random), u(random), 2.0);
+    const AimPose p = aim_pose(intruder, hunter, 0.3, kAim, kOffset);
+    const auto camera = geometry::camera_on_body(
+        p.position, Eigen::Quaterniond(Eigen::AngleAxisd(p.yaw, Eigen::Vector3d::UnitZ())), kOffset);
+    EXPECT_LT((camera.to_camera(intruder) - kAim).norm(), 1e-9) << i;
+  }
+}
+
+TEST(AimLaw, AngleDifferenceWraps) {
+  EXPECT_NEAR(angle_difference(M_PI - 0.1, -M_PI + 0.1), -0.2, 1e-12);
+  EXPECT_NEAR(angle_difference(-M_PI + 0.1, M_PI - 0.1), 0.2, 1e-12);
+  EXPECT_NEAR(angle_difference(0.5, 0.2), 0.3, 1e-12);
+  EXPECT_NEAR(angle_difference(M_PI, 0.0), M_PI, 1e-12);
+}
+
+TEST(AimReference, ReachesAStillGoalWithinItsLimits) {
+  const AimReference::Limits limits{1.0, 2.0, 3.0, 1.0};
+  AimReference r(limits, {0, 0, 0}, 0.0);
+  AimPose goal;
+  goal.position = {10.0, 0.0, 2.0};
+  goal.yaw = 3.0;
+  const double dt = 0.02;
+  Eigen::Vector3d last_v = Eigen::Vector3d::Zero();
+  for (int i = 0; i < 1500; ++i) {
+    const double last_yaw = r.yaw();
+    r.advance(goal, Eigen::Vector3d::Zero(), dt);
+    EXPECT_LE(r.velocity().norm(), 2.0 + 1e-9);
+    EXPECT_LE((r.velocity() - last_v).norm(), 3.0 * dt + 1e-9);
+    EXPECT_LE(std::abs(angle_difference(r.yaw(), last_yaw)), 1.0 * dt + 1e-9);
+    last_v = r.velocity();
+  }
+  EXPECT_LT((r.position() - goal.position).norm(), 0.01);
+  EXPECT_NEAR(r.yaw(), 3.0, 1e-9);
+}
+
+TEST(AimReference, TurnsTheShortWayAndFollowsAMovingGoal) {
+  AimReference r({1.0, 5.0, 5.0, 1.0}, {0, 0, 2}, 170.0 * M_PI / 180.0);
+  AimPose goal;
+  goal.position = {0, 0, 2};
+  goal.yaw = -170.0 * M_PI / 180.0;
+  r.advance(goal, Eigen::Vector3d::Zero(), 0.1);
+  EXPECT_GT(angle_difference(r.yaw(), 170.0 * M_PI / 180.0), 0.0);  // through 180, not back through 0
+  // A goal moving at 1 m/s: the feed-forward removes the lag once settled.
+  AimReference f({1.0, 5.0, 5.0, 1.0}, {0, 0, 2}, 0.0);
+  for (int i = 0; i < 1000; ++i) {
+    goal.position = Eigen::Vector3d(0.02 * i, 0, 2);
+    goal.yaw = 0.0;
+    f.advance(goal, Eigen::Vector3d(1.0, 0, 0), 0.02);
+  }
+  EXPECT_LT((f.position() - goal.position).norm(), 0.03);
+  EXPECT_NEAR(f.velocity().x(), 1.0, 1e-3);
+}
+
+TEST(AimReference, HoldStopsAndSearchTurns) {
+  AimReference r({1.0, 5.0, 2.0, 1.0}, {0, 0, 2}, 0.0);
+  AimPose goal;
+  goal.position = {20, 0, 2};
+  for (int i = 0; i < 100; ++i) r.advance(goal, Eigen::Vector3d::Zero(), 0.02);
+  const double speed = r.velocity().norm();
+  EXPECT_GT(speed, 1.0);
+  for (int i = 0; i < 200; ++i) r.hold(0.02, 0.5);
+  EXPECT_NEAR(r.velocity().norm(), 0.0, 1e-12);  // stopped at 2 m/s^2 within speed / 2 s
+  EXPECT_NEAR(r.yaw_rate(), 0.5, 1e-12);
+}
+
+TEST(FireTrigger, FiresAfterTheDwellAndNotAgainWithinTheCooldown) {
+  FireTrigger fire(0.5, 0.5, 3.0);
+  const Eigen::Vector3d good(0.1, 0.2, 0.0), bad(0.6, 0.0, 0.0);
+  EXPECT_FALSE(fire.update(0.0, &good));
+  EXPECT_FALSE(fire.update(0.3, &good));
+  EXPECT_FALSE(fire.update(0.4, &bad));  // left the radius: the dwell starts again
+  EXPECT_FALSE(fire.update(0.5, &good));
+  EXPECT_FALSE(fire.update(0.9, &good));
+  EXPECT_TRUE(fire.update(1.0, &good));  // 0.5 s within
+  EXPECT_FALSE(fire.update(1.6, &good));
+  EXPECT_FALSE(fire.update(3.9, &good));  // within the cooldown
+  EXPECT_TRUE(fire.update(4.0, &good));
+  EXPECT_FALSE(fire.update(10.0, nullptr));  // no target, no shot
+}
