@@ -38,6 +38,7 @@ struct AimPlannerConfig {
   double search_yaw_rate_deg_s = 20.0;
   double capture_radius_m = 0.5;
   double dwell_s = 0.5;
+  double net_flight_time_s = 0.4;
   double cooldown_s = 3.0;
 };
 
@@ -103,6 +104,10 @@ class AimPlannerNode final : public Node {
         .with_unit("m")
         .range(0.01, 10.0)
         .describe("fire when |x_E^d - x_E| stays below this (the net's capture radius)");
+    c.param("net_flight_time_s", &C::net_flight_time_s)
+        .with_unit("s")
+        .range(0.0, 10.0)
+        .describe("launch to widest opening: the shot leads the target by this much (0: no lead)");
     c.param("dwell_s", &C::dwell_s).with_unit("s").range(0.0, 60.0).describe("how long the aim must hold before firing");
     c.param("cooldown_s", &C::cooldown_s).with_unit("s").range(0.0, 3600.0).describe("least time between two shots");
     c.rule("min_altitude_m <= takeoff_altitude_m", {"min_altitude_m", "takeoff_altitude_m"},
@@ -112,7 +117,9 @@ class AimPlannerNode final : public Node {
             "The paper's section 2.4: drives e_x = x_E^d - x_E to zero with the hunter's position along its heading, "
             "its height and its yaw (which keeps the target in view), through a setpoint limited in speed, "
             "acceleration and yaw rate, with the target's velocity fed forward. One setpoint per tracks message. "
-            "Fires when the aim error stays within capture_radius_m for dwell_s, at most once per cooldown_s.")
+            "Fires when the predicted miss stays within capture_radius_m for dwell_s, at most once per cooldown_s: "
+            "where the target will be after net_flight_time_s (its world-frame estimate) against where the net will "
+            "open (the aim point carried by the hunter's velocity), so the shot leads a moving target.")
         .input(kTracks, "the tracker's tracks; the selected one is the target (camera frame)")
         .input(kOdometry, "the hunter's state", {.trigger = Trigger::latest})
         .output(kSetpoint, "where the hunter should be (world)")
@@ -142,7 +149,8 @@ class AimPlannerNode final : public Node {
       ++ground_frames_;
       target = nullptr;
     }
-    std::optional<Eigen::Vector3d> error;
+    std::optional<Eigen::Vector3d> error, miss;
+    if (estimate_ && t - last_seen_ > cfg_.target_timeout_s) estimate_.reset();  // too old to predict from
     if (estimate_) estimate_->predict(dt);
     if (target) {
       const Eigen::Vector3d in_camera = target->position();
@@ -164,6 +172,12 @@ class AimPlannerNode final : public Node {
       error = cfg_.aim_point_m - in_camera;
       ++target_frames_;
       squared_error_ += error->squaredNorm();
+      // The miss if the net were fired now: target and net opening, both net_flight_time_s ahead.
+      const double T = cfg_.net_flight_time_s;
+      const Eigen::Vector3d target_then = x.head<3>() + x.segment<3>(3) * T + 0.5 * x.segment<3>(6) * T * T;
+      const Eigen::Vector3d net_then =
+          camera.position_world + hunter->velocity * T + camera.world_from_camera() * cfg_.aim_point_m;
+      miss = target_then - net_then;
     }
 
     if (goal_ && (target || t - last_seen_ <= cfg_.target_timeout_s)) {
@@ -187,10 +201,11 @@ class AimPlannerNode final : public Node {
     sp.yaw_rate = reference_->yaw_rate();
     ctx.publish(kSetpoint, std::move(sp));
 
-    if (fire_.update(t, error ? &*error : nullptr)) {
+    if (fire_.update(t, miss ? &*miss : nullptr)) {
       ++fire_count_;
       if (!first_fire_) first_fire_ = t;
-      ctx.log().info("fire at t = {:.2f} s: target {}, aim error {:.2f} m", t, target->id, error->norm());
+      ctx.log().info("fire at t = {:.2f} s: target {}, aim error {:.2f} m, predicted miss {:.2f} m", t, target->id,
+                     error->norm(), miss->norm());
       ctx.publish(kFire, msg::NetFire{tracks->stamp, target->id, *error});
     }
   }
