@@ -149,6 +149,9 @@ class AimPlannerNode final : public Node {
       ++ground_frames_;
       target = nullptr;
     }
+    // A coasting track (no detection this frame) is the tracker's extrapolation, not a sighting:
+    // aiming follows sightings only, and flies on towards the last one meanwhile.
+    if (target && target->misses > 0) target = nullptr;
     std::optional<Eigen::Vector3d> error, miss;
     if (estimate_ && t - last_seen_ > cfg_.target_timeout_s) estimate_.reset();  // too old to predict from
     if (estimate_) estimate_->predict(dt);
@@ -180,8 +183,11 @@ class AimPlannerNode final : public Node {
       miss = target_then - net_then;
     }
 
-    if (goal_ && (target || t - last_seen_ <= cfg_.target_timeout_s)) {
-      reference_->advance(*goal_, goal_velocity_, dt);  // a short loss: keep going where it was heading
+    if (goal_ && target) {
+      reference_->advance(*goal_, goal_velocity_, dt);
+    } else if (goal_ && t - last_seen_ <= cfg_.target_timeout_s) {
+      // A short loss: on towards the last aim pose, without feeding forward a velocity nobody sees.
+      reference_->advance(*goal_, Eigen::Vector3d::Zero(), dt);
     } else if (goal_) {
       if (!holding_) ++holds_;
       holding_ = true;
