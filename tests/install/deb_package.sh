@@ -58,5 +58,5 @@ echo "Depends covers the ${#owners[@]} packages of the ${#libs[@]} libraries the
 
 check_relative_rpaths "$root/usr"
 check_plugins "$root/usr/bin/kestrel" "$build"
-check_graph "$root/usr/bin/kestrel" "$root/usr/share/kestrel/graphs/paper_tracking.yaml" "$work/elsewhere"
+check_graph "$root/usr/bin/kestrel" "$root/usr/share/kestrel/graphs/sim_intercept.yaml" "$work/elsewhere"  # the demo graph
 echo "Debian package: ok"
