@@ -20,7 +20,7 @@ kestrel_require(nlohmann_json nlohmann-json3-dev 3)
 kestrel_require(CLI11 libcli11-dev)
 # Header-only: Boost.Math's Student's t distribution for the CLI's confidence intervals.
 kestrel_require(Boost libboost-dev 1.74)
-kestrel_require(OpenCV libopencv-dev 4 COMPONENTS core imgproc imgcodecs calib3d)
+kestrel_require(OpenCV libopencv-dev 4 COMPONENTS core imgproc imgcodecs calib3d videoio)
 # PCL 1.13 makes imported targets (pcl_common, pcl_filters, ...) for these components.
 kestrel_require(PCL libpcl-dev 1.13 COMPONENTS common filters segmentation search kdtree)
 kestrel_require(mrpt-bayes libmrpt-bayes-dev)

@@ -106,6 +106,8 @@ OUTCOMES = {
         ("r['control']['captured'] is True", "the intruder is caught"),
         ("r['hunter']['touchdowns'] == 0", "no crash into the ground"),
         ("r['controller']['faults'] == 0", "finite setpoints and states throughout"),
+        ("r['video']['frames'] == frames and r['video']['unmatched'] == 0", "every camera frame is in the onboard video"),
+        ("any(a['file'] == 'onboard.avi' for a in r['artifacts'])", "the video is in the report"),
     ]),
 }
 
