@@ -25,7 +25,7 @@ struct SweepSummary {
   /// Per grid point: how many of its runs reported the metric as undefined (null).
   std::vector<std::map<std::string, std::size_t>> undefined;
   std::vector<std::size_t> runs_per_point;  ///< per grid point
-  std::size_t failed = 0;              ///< runs that exited non-zero
+  std::size_t failed = 0;                   ///< runs that exited non-zero
   MetricsMeta meta;
 
   /// The best grid point of a metric with a direction whose means differ between points.

@@ -127,8 +127,9 @@ std::string write_sweep_outputs(const std::filesystem::path& dir, const std::str
                         panels.size(), plotted.size(), x);
   }
   if (any_undefined(summary))
-    md += "\nn/a: undefined (the report gave null: nothing to measure it on); \"k of n n/a\": the mean is over the "
-          "other seeds.\n";
+    md +=
+        "\nn/a: undefined (the report gave null: nothing to measure it on); \"k of n n/a\": the mean is over the "
+        "other seeds.\n";
   if (summary.failed) md += fmt::format("\n{} run(s) failed; see runs/*/run.log.\n", summary.failed);
   write_file(dir / "sweep.md", md);
   return md;
@@ -179,8 +180,9 @@ std::string write_ab_outputs(const std::filesystem::path& dir, const AbArgs& arg
                         d.ci95.low, d.ci95.high, row.better.empty() ? "n/a" : row.better);
   }
   if (any_undefined)
-    md += "\n(k of n seeds n/a): the metric was undefined (null) in A or B on k seeds; the means, difference and "
-          "interval are over the others.\n";
+    md +=
+        "\n(k of n seeds n/a): the metric was undefined (null) in A or B on k seeds; the means, difference and "
+        "interval are over the others.\n";
   if (any_magnitude) md += "\n(magnitude): means and difference of |value|, as the reports' metrics_meta asks.\n";
   if (any_unjudged) md += "\nn/a: the reports' metrics_meta does not say which way is better.\n";
   if (!meta.conflicts().empty())

@@ -70,7 +70,6 @@ void inspect_node(const NodeType& type, const Registry& registry) {
   }
 }
 
-
 // A message type and its fields: name, type, unit and frame in aligned columns, then what each is.
 void print_message(const MessageTypeEntry& message) {
   const MessageInfo& info = message.info;
@@ -121,7 +120,6 @@ int plugins_command() {
   print_errors(*host);
   return host->errors().empty() ? kOk : kNotFound;
 }
-
 
 int inspect_command(const std::string& name) {
   auto host = load_plugins();

@@ -1,8 +1,8 @@
 #include "kestrel/vehicle/multirotor.hpp"
 
-#include "kestrel/vehicle/multirotor_config.hpp"
-
 #include <cmath>
+
+#include "kestrel/vehicle/multirotor_config.hpp"
 
 namespace kestrel::vehicle {
 

@@ -15,8 +15,8 @@ double angle_difference(double a, double b) {
 AimPose aim_pose(const Eigen::Vector3d& intruder_world, const Eigen::Vector3d& hunter_position, double current_yaw,
                  const Eigen::Vector3d& aim_point_camera, const Eigen::Vector3d& camera_offset_body) {
   AimPose pose;
-  const Eigen::Vector3d camera = hunter_position + Eigen::AngleAxisd(current_yaw, Eigen::Vector3d::UnitZ()) *
-                                                       camera_offset_body;
+  const Eigen::Vector3d camera =
+      hunter_position + Eigen::AngleAxisd(current_yaw, Eigen::Vector3d::UnitZ()) * camera_offset_body;
   const Eigen::Vector2d towards = (intruder_world - camera).head<2>();
   pose.yaw = towards.norm() > 0.05 ? std::atan2(towards.y(), towards.x()) : current_yaw;
   // A level camera with that heading, placed so that the intruder appears at the aim point.
@@ -42,8 +42,8 @@ void AimReference::move(const Eigen::Vector3d& wanted_velocity, double dt) {
 
 void AimReference::advance(const AimPose& goal, const Eigen::Vector3d& goal_velocity, double dt) {
   move(goal_velocity + limits_.gain * (goal.position - position_), dt);
-  const double turn = std::clamp(angle_difference(goal.yaw, yaw_), -limits_.max_yaw_rate * dt,
-                                 limits_.max_yaw_rate * dt);
+  const double turn =
+      std::clamp(angle_difference(goal.yaw, yaw_), -limits_.max_yaw_rate * dt, limits_.max_yaw_rate * dt);
   yaw_rate_ = dt > 0.0 ? turn / dt : 0.0;
   yaw_ = angle_difference(yaw_ + turn, 0.0);
 }

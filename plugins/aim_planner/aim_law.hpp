@@ -30,10 +30,10 @@ double angle_difference(double a, double b);
 class AimReference {
  public:
   struct Limits {
-    double gain = 1.0;             ///< 1/s: pull towards the goal
-    double max_speed = 3.0;        ///< m/s
+    double gain = 1.0;              ///< 1/s: pull towards the goal
+    double max_speed = 3.0;         ///< m/s
     double max_acceleration = 3.0;  ///< m/s^2
-    double max_yaw_rate = 1.0;     ///< rad/s
+    double max_yaw_rate = 1.0;      ///< rad/s
   };
 
   AimReference(Limits limits, const Eigen::Vector3d& start, double start_yaw);

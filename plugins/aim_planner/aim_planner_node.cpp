@@ -55,12 +55,16 @@ class AimPlannerNode final : public Node {
     c.param("aim_point_m", &C::aim_point_m)
         .with_unit("m")
         .range(-50.0, 50.0)
-        .describe("x_E^d: where the net opens, in the camera frame (x right, y down, z forward); the paper's [0, 1, 2]");
+        .describe(
+            "x_E^d: where the net opens, in the camera frame (x right, y down, z forward); the paper's [0, 1, 2]");
     c.param("camera_offset_m", &C::camera_offset_m)
         .with_unit("m")
         .range(-10.0, 10.0)
         .describe("the camera's position in the body frame (as the camera node has it)");
-    c.param("gain_1_s", &C::gain_1_s).with_unit("1/s").range(0.01, 100.0).describe("pull of the setpoint towards the aim pose");
+    c.param("gain_1_s", &C::gain_1_s)
+        .with_unit("1/s")
+        .range(0.01, 100.0)
+        .describe("pull of the setpoint towards the aim pose");
     c.param("max_speed_m_s", &C::max_speed_m_s).with_unit("m/s").range(0.1, 100.0).describe("setpoint speed limit");
     c.param("max_acceleration_m_s2", &C::max_acceleration_m_s2)
         .with_unit("m/s^2")
@@ -108,7 +112,10 @@ class AimPlannerNode final : public Node {
         .with_unit("s")
         .range(0.0, 10.0)
         .describe("launch to widest opening: the shot leads the target by this much (0: no lead)");
-    c.param("dwell_s", &C::dwell_s).with_unit("s").range(0.0, 60.0).describe("how long the aim must hold before firing");
+    c.param("dwell_s", &C::dwell_s)
+        .with_unit("s")
+        .range(0.0, 60.0)
+        .describe("how long the aim must hold before firing");
     c.param("cooldown_s", &C::cooldown_s).with_unit("s").range(0.0, 3600.0).describe("least time between two shots");
     c.rule("min_altitude_m <= takeoff_altitude_m", {"min_altitude_m", "takeoff_altitude_m"},
            [](const C& k) { return k.min_altitude_m <= k.takeoff_altitude_m; });
@@ -168,7 +175,8 @@ class AimPlannerNode final : public Node {
         estimate_->update(intruder);
       }
       const Eigen::VectorXd x = estimate_->state();
-      goal_ = aim_pose(x.head<3>(), hunter->position, yaw_of(*hunter), cfg_.aim_point_m, cfg_.camera_offset_m);
+      goal_ = aim_pose(x.head<3>(), hunter->position, geometry::yaw_of(hunter->orientation), cfg_.aim_point_m,
+                       cfg_.camera_offset_m);
       goal_->position.z() = std::max(goal_->position.z(), cfg_.min_altitude_m);
       goal_velocity_ = x.segment<3>(3);
       last_seen_ = t;
@@ -221,19 +229,19 @@ class AimPlannerNode final : public Node {
     const nlohmann::json rmse =
         target_frames_ ? nlohmann::json(std::sqrt(squared_error_ / static_cast<double>(target_frames_))) : nullptr;
     const nlohmann::json first = first_fire_ ? nlohmann::json(*first_fire_) : nullptr;
-    ctx.set_report_section(id,
-                           {{"frames", frames_},
-                            {"target_frames", target_frames_},
-                            {"aim_rmse_m", rmse},
-                            {"fire_count", fire_count_},
-                            {"time_to_first_fire_s", first},
-                            {"holds", holds_},
-                            {"ground_frames", ground_frames_}},
-                           fmt::format("Target in {} of {} frames; aim error (from the tracks) {} m RMS; {} shot(s), "
-                                       "the first at {}; held {} time(s) after losing the target.\n",
-                                       target_frames_, frames_, rmse.is_null() ? "n/a" : fmt::format("{:.3f}", rmse.get<double>()),
-                                       fire_count_, first.is_null() ? "n/a" : fmt::format("{:.2f} s", first.get<double>()),
-                                       holds_));
+    ctx.set_report_section(
+        id,
+        {{"frames", frames_},
+         {"target_frames", target_frames_},
+         {"aim_rmse_m", rmse},
+         {"fire_count", fire_count_},
+         {"time_to_first_fire_s", first},
+         {"holds", holds_},
+         {"ground_frames", ground_frames_}},
+        fmt::format("Target in {} of {} frames; aim error (from the tracks) {} m RMS; {} shot(s), "
+                    "the first at {}; held {} time(s) after losing the target.\n",
+                    target_frames_, frames_, rmse.is_null() ? "n/a" : fmt::format("{:.3f}", rmse.get<double>()),
+                    fire_count_, first.is_null() ? "n/a" : fmt::format("{:.2f} s", first.get<double>()), holds_));
     ctx.describe_quantity(id + ".frames");
     ctx.describe_quantity(id + ".target_frames");
     ctx.describe_metric(id + ".aim_rmse_m", "m", false);
@@ -244,18 +252,13 @@ class AimPlannerNode final : public Node {
   }
 
  private:
-  static double yaw_of(const msg::VehicleState& s) {
-    const Eigen::Vector3d forward = s.orientation * Eigen::Vector3d::UnitX();
-    return std::atan2(forward.y(), forward.x());
-  }
-
   void start(const msg::VehicleState& hunter) {
     AimReference::Limits limits{cfg_.gain_1_s, cfg_.max_speed_m_s, cfg_.max_acceleration_m_s2,
                                 cfg_.max_yaw_rate_deg_s * M_PI / 180.0};
-    reference_.emplace(limits, hunter.position, yaw_of(hunter));
+    reference_.emplace(limits, hunter.position, geometry::yaw_of(hunter.orientation));
     takeoff_.position = hunter.position;
     takeoff_.position.z() = std::max(hunter.position.z(), cfg_.takeoff_altitude_m);
-    takeoff_.yaw = yaw_of(hunter);
+    takeoff_.yaw = geometry::yaw_of(hunter.orientation);
   }
 
   AimPlannerConfig cfg_;

@@ -5,6 +5,7 @@
 // reaches the motors: the command falls back to a safe hover or to cut motors, and is counted.
 #include <fmt/format.h>
 
+#include <kestrel/geometry/frames.hpp>
 #include <kestrel/messages/actuator_command.hpp>
 #include <kestrel/messages/attitude_target.hpp>
 #include <kestrel/messages/trajectory_setpoint.hpp>
@@ -54,14 +55,8 @@ class LeeControllerNode final : public Node {
     using C = LeeControllerConfig;
     ConfigSpec<C> c;
     c.param("position_gain", &C::position_gain).with_unit("N/m").range(0.0, 1000.0).describe("k_x, per world axis");
-    c.param("velocity_gain", &C::velocity_gain)
-        .with_unit("N s/m")
-        .range(0.0, 1000.0)
-        .describe("k_v, per world axis");
-    c.param("attitude_gain", &C::attitude_gain)
-        .with_unit("N m/rad")
-        .range(0.0, 1000.0)
-        .describe("k_R, per body axis");
+    c.param("velocity_gain", &C::velocity_gain).with_unit("N s/m").range(0.0, 1000.0).describe("k_v, per world axis");
+    c.param("attitude_gain", &C::attitude_gain).with_unit("N m/rad").range(0.0, 1000.0).describe("k_R, per body axis");
     c.param("angular_rate_gain", &C::angular_rate_gain)
         .with_unit("N m s/rad")
         .range(0.0, 1000.0)
@@ -124,8 +119,7 @@ class LeeControllerNode final : public Node {
       // A bad setpoint before any good one: hold where the vehicle is.
       msg::TrajectorySetpoint hold;
       hold.position = state->position;
-      const Eigen::Vector3d forward = state->orientation * Eigen::Vector3d::UnitX();
-      hold.yaw = std::atan2(forward.y(), forward.x());
+      hold.yaw = geometry::yaw_of(state->orientation);
       last_good_ = hold;
       const LeeCommand lee = control_.compute(hold, *state);
       speeds = lee.rotor_speeds;
@@ -145,18 +139,18 @@ class LeeControllerNode final : public Node {
   void finish(Context& ctx) override {
     const std::string id = ctx.id();
     const std::uint64_t faults = bad_setpoints_ + bad_states_ + bad_outputs_;
-    ctx.set_report_section(id,
-                           {{"commands", commands_},
-                            {"saturated_commands", saturated_},
-                            {"faults", faults},
-                            {"bad_setpoints", bad_setpoints_},
-                            {"bad_states", bad_states_}},
-                           fmt::format("{} commands, {} saturated; {} fault(s) handled by {} ({} bad setpoint(s), {} "
-                                       "bad state(s)).\n",
-                                       commands_, saturated_, faults,
-                                       cfg_.on_fault == LeeControllerConfig::OnFault::cut ? "cutting the motors"
-                                                                                          : "hovering",
-                                       bad_setpoints_, bad_states_));
+    ctx.set_report_section(
+        id,
+        {{"commands", commands_},
+         {"saturated_commands", saturated_},
+         {"faults", faults},
+         {"bad_setpoints", bad_setpoints_},
+         {"bad_states", bad_states_}},
+        fmt::format("{} commands, {} saturated; {} fault(s) handled by {} ({} bad setpoint(s), {} "
+                    "bad state(s)).\n",
+                    commands_, saturated_, faults,
+                    cfg_.on_fault == LeeControllerConfig::OnFault::cut ? "cutting the motors" : "hovering",
+                    bad_setpoints_, bad_states_));
     ctx.describe_quantity(id + ".commands");
     ctx.describe_metric(id + ".saturated_commands", "", false);
     ctx.describe_metric(id + ".faults", "", false);
@@ -173,8 +167,8 @@ class LeeControllerNode final : public Node {
 
   void fault(Context& ctx, std::uint64_t& counter, const char* what) {
     if (counter++ == 0)
-      ctx.log().warn("the {} is not finite at t = {:.3f} s; {} (counted in the report)", what,
-                to_seconds(ctx.now()), cfg_.on_fault == LeeControllerConfig::OnFault::cut ? "motors cut" : "hovering");
+      ctx.log().warn("the {} is not finite at t = {:.3f} s; {} (counted in the report)", what, to_seconds(ctx.now()),
+                     cfg_.on_fault == LeeControllerConfig::OnFault::cut ? "motors cut" : "hovering");
   }
 
   LeeControllerConfig cfg_;

@@ -6,8 +6,7 @@
 
 namespace kestrel::control {
 
-LeePositionControl::LeePositionControl(vehicle::Multirotor vehicle, LeeGains gains, double gravity,
-                                       double max_tilt_rad)
+LeePositionControl::LeePositionControl(vehicle::Multirotor vehicle, LeeGains gains, double gravity, double max_tilt_rad)
     : vehicle_(std::move(vehicle)), gains_(std::move(gains)), gravity_(gravity), max_tilt_rad_(max_tilt_rad) {
   // Minimum-norm squared speeds for a wrench: the right pseudo-inverse of the allocation, computed
   // once from the rotor configuration.
@@ -81,8 +80,8 @@ LeeCommand LeePositionControl::compute(const msg::TrajectorySetpoint& sp, const 
   out.attitude_error = attitude_error(out.attitude, r);
   out.rate_error = state.angular_velocity - r.transpose() * out.attitude * out.body_rates;
   const Eigen::Vector3d momentum = vehicle_.inertia_kg_m2.cwiseProduct(state.angular_velocity);
-  out.torque_nm = -gains_.attitude.cwiseProduct(out.attitude_error) -
-                  gains_.angular_rate.cwiseProduct(out.rate_error) + state.angular_velocity.cross(momentum);
+  out.torque_nm = -gains_.attitude.cwiseProduct(out.attitude_error) - gains_.angular_rate.cwiseProduct(out.rate_error) +
+                  state.angular_velocity.cross(momentum);
 
   bool clipped = false;
   out.rotor_speeds = allocate(out.torque_nm, out.thrust_n, &clipped);

@@ -23,14 +23,14 @@ struct LeeGains {
 };
 
 struct LeeCommand {
-  Eigen::Vector3d force_world = Eigen::Vector3d::Zero();  ///< desired total force, after the tilt limit
+  Eigen::Vector3d force_world = Eigen::Vector3d::Zero();   ///< desired total force, after the tilt limit
   Eigen::Matrix3d attitude = Eigen::Matrix3d::Identity();  ///< desired rotation, body to world
   Eigen::Vector3d body_rates = Eigen::Vector3d::Zero();    ///< desired, in the desired body frame
   Eigen::Vector3d attitude_error = Eigen::Vector3d::Zero();
   Eigen::Vector3d rate_error = Eigen::Vector3d::Zero();
-  double thrust_n = 0.0;                                  ///< along the current body z
-  Eigen::Vector3d torque_nm = Eigen::Vector3d::Zero();    ///< body
-  Eigen::VectorXd rotor_speeds;                           ///< rad/s, within [0, max]
+  double thrust_n = 0.0;                                ///< along the current body z
+  Eigen::Vector3d torque_nm = Eigen::Vector3d::Zero();  ///< body
+  Eigen::VectorXd rotor_speeds;                         ///< rad/s, within [0, max]
   bool saturated = false;  ///< a rotor speed was clipped to its range, or the tilt limit acted
 };
 

@@ -60,7 +60,8 @@ class NetSimNode final : public Node {
     return NodeSpec("net_sim", "Simulated net: flies, opens, catches; judges the intercept")
         .details(
             "A fire order launches the net on a parabola that opens at open_point_m (camera frame at launch) after "
-            "flight_time_s; an intruder within radius_m of its centre while open is caught. Reports control.{aim_rmse_m, "
+            "flight_time_s; an intruder within radius_m of its centre while open is caught. Reports "
+            "control.{aim_rmse_m, "
             "time_to_align_s, time_to_first_fire_s, fire_count, captured, time_to_capture_s} from the true states, "
             "and draws the flight (top view, heights) and the aim error with the shots.")
         .input(kFire, "orders to fire")
@@ -126,10 +127,11 @@ class NetSimNode final : public Node {
          {"fire_count", fire_times_.size()},
          {"captured", captured_at_.has_value()},
          {"time_to_capture_s", maybe(captured_at_)}},
-        fmt::format("{}. Aligned (true aim error within {:.2f} m) at {}; aim error from then on {} RMS; {} shot(s), "
-                    "the first at {}.\n",
-                    captured_at_ ? fmt::format("**Captured** at {:.2f} s", *captured_at_) : std::string("**Not captured**"),
-                    cfg_.radius_m, text(aligned_at_, "s"), text(rmse, "m"), fire_times_.size(), text(first_fire_, "s")));
+        fmt::format(
+            "{}. Aligned (true aim error within {:.2f} m) at {}; aim error from then on {} RMS; {} shot(s), "
+            "the first at {}.\n",
+            captured_at_ ? fmt::format("**Captured** at {:.2f} s", *captured_at_) : std::string("**Not captured**"),
+            cfg_.radius_m, text(aligned_at_, "s"), text(rmse, "m"), fire_times_.size(), text(first_fire_, "s")));
     ctx.describe_metric(s + ".aim_rmse_m", "m", false);
     ctx.describe_metric(s + ".time_to_align_s", "s", false);
     ctx.describe_metric(s + ".time_to_first_fire_s", "s", false);
@@ -176,13 +178,21 @@ class NetSimNode final : public Node {
 
   plot::Panel aim_panel() const {
     plot::Series error{"|x_E^d - x_E|", t_, error_, plot::Series::Style::line, plot::palette(0), 2};
-    plot::Series radius{"net radius", {t_.front(), t_.back()}, {cfg_.radius_m, cfg_.radius_m},
-                        plot::Series::Style::line, plot::palette(7), 1};
-    plot::Series shots{"shots", fire_times_, std::vector<double>(fire_times_.size(), 0.0),
-                       plot::Series::Style::points, plot::palette(3), 6};
+    plot::Series radius{"net radius",
+                        {t_.front(), t_.back()},
+                        {cfg_.radius_m, cfg_.radius_m},
+                        plot::Series::Style::line,
+                        plot::palette(7),
+                        1};
+    plot::Series shots{"shots",
+                       fire_times_,
+                       std::vector<double>(fire_times_.size(), 0.0),
+                       plot::Series::Style::points,
+                       plot::palette(3),
+                       6};
     plot::Panel panel{"true aim error", "t [s]", "m", {error, radius, shots}};
-    if (captured_at_) panel.series.push_back({"capture", {*captured_at_}, {0.0}, plot::Series::Style::points,
-                                              plot::palette(2), 10});
+    if (captured_at_)
+      panel.series.push_back({"capture", {*captured_at_}, {0.0}, plot::Series::Style::points, plot::palette(2), 10});
     return panel;
   }
 

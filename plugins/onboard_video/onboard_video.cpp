@@ -39,7 +39,9 @@ class OnboardVideoNode final : public Node {
     c.param("name", &C::name).describe("file name, without .avi");
     c.param("fps", &C::fps).with_unit("Hz").range(1.0, 240.0).describe("frame rate written in the file");
     c.param("max_frames", &C::max_frames).range(1, 1000000).describe("frames written at most (later ones counted)");
-    c.param("scale", &C::scale).range(0.1, 1.0).describe("video size against the camera image (file size against detail)");
+    c.param("scale", &C::scale)
+        .range(0.1, 1.0)
+        .describe("video size against the camera image (file size against detail)");
     c.param("aim_point_m", &C::aim_point_m).with_unit("m").range(-50.0, 50.0).describe("x_E^d, drawn as a cross");
     c.param("capture_radius_m", &C::capture_radius_m)
         .with_unit("m")

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <kestrel/geometry/frames.hpp>
 
 namespace kestrel::quadrotor {
 
@@ -41,8 +42,8 @@ MultirotorDynamics::Derivative MultirotorDynamics::derivative(const RigidBodySta
   d.rotor_speeds.resize(s.rotor_speeds.size());
   for (Eigen::Index i = 0; i < s.rotor_speeds.size(); ++i) {
     const double target = std::clamp(commanded(i), 0.0, vehicle_.max_rotor_speed_rad_s);
-    const double tau = target > s.rotor_speeds(i) ? vehicle_.motor_time_constant_up_s
-                                                  : vehicle_.motor_time_constant_down_s;
+    const double tau =
+        target > s.rotor_speeds(i) ? vehicle_.motor_time_constant_up_s : vehicle_.motor_time_constant_down_s;
     d.rotor_speeds(i) = (target - s.rotor_speeds(i)) / tau;
   }
   return d;
@@ -86,8 +87,7 @@ void MultirotorDynamics::contact(RigidBodyState& s, const Environment& env) cons
   on_ground_ = true;
   s.velocity.setZero();
   s.angular_velocity.setZero();
-  const Eigen::Vector3d forward = s.orientation * Eigen::Vector3d::UnitX();
-  s.orientation = Eigen::AngleAxisd(std::atan2(forward.y(), forward.x()), Eigen::Vector3d::UnitZ());
+  s.orientation = Eigen::AngleAxisd(geometry::yaw_of(s.orientation), Eigen::Vector3d::UnitZ());
 }
 
 }  // namespace kestrel::quadrotor

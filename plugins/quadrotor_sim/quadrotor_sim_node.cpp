@@ -115,17 +115,17 @@ class QuadrotorSimNode final : public Node {
 
   void finish(Context& ctx) override {
     const std::string id = ctx.id();
-    ctx.set_report_section(id,
-                           {{"flight_time_s", flight_time_s_},
-                            {"distance_m", distance_m_},
-                            {"max_speed_m_s", max_speed_},
-                            {"max_tilt_deg", max_tilt_deg_},
-                            {"touchdowns", touchdowns_},
-                            {"final_position_m",
-                             {{"x", state_.position.x()}, {"y", state_.position.y()}, {"z", state_.position.z()}}}},
-                           fmt::format("{:.1f} s in the air, {:.1f} m flown, top speed {:.2f} m/s, largest tilt "
-                                       "{:.1f} deg, {} touchdown(s).\n",
-                                       flight_time_s_, distance_m_, max_speed_, max_tilt_deg_, touchdowns_));
+    ctx.set_report_section(
+        id,
+        {{"flight_time_s", flight_time_s_},
+         {"distance_m", distance_m_},
+         {"max_speed_m_s", max_speed_},
+         {"max_tilt_deg", max_tilt_deg_},
+         {"touchdowns", touchdowns_},
+         {"final_position_m", {{"x", state_.position.x()}, {"y", state_.position.y()}, {"z", state_.position.z()}}}},
+        fmt::format("{:.1f} s in the air, {:.1f} m flown, top speed {:.2f} m/s, largest tilt "
+                    "{:.1f} deg, {} touchdown(s).\n",
+                    flight_time_s_, distance_m_, max_speed_, max_tilt_deg_, touchdowns_));
     ctx.describe_quantity(id + ".flight_time_s", "s");
     ctx.describe_quantity(id + ".distance_m", "m");
     ctx.describe_quantity(id + ".max_speed_m_s", "m/s");
@@ -202,7 +202,8 @@ class QuadrotorSimNode final : public Node {
     s.position += gauss(cfg_.position_noise_m);
     s.velocity += gauss(cfg_.velocity_noise_m_s);
     const Eigen::Vector3d tilt = gauss(cfg_.attitude_noise_deg * M_PI / 180.0);
-    if (tilt.norm() > 0.0) s.orientation = (s.orientation * Eigen::AngleAxisd(tilt.norm(), tilt.normalized())).normalized();
+    if (tilt.norm() > 0.0)
+      s.orientation = (s.orientation * Eigen::AngleAxisd(tilt.norm(), tilt.normalized())).normalized();
     s.angular_velocity += gauss(cfg_.rate_noise_rad_s);
     return s;
   }

@@ -105,8 +105,9 @@ TEST(ClosedLoop, ABlackoutMakesTheHunterHoldThenReacquire) {
     ASSERT_NE(at, std::string::npos) << from;
     yaml.replace(at, from.size(), to);
   };
-  replace("  - id: tracker\n", "  - {id: blackout, type: detection_dropout, params: {first_s: 4.5, frames: 60, period_s: 1000}}\n"
-                               "  - id: tracker\n");
+  replace("  - id: tracker\n",
+          "  - {id: blackout, type: detection_dropout, params: {first_s: 4.5, frames: 60, period_s: 1000}}\n"
+          "  - id: tracker\n");
   replace("  - {from: gate.detections, to: tracker.detections, policy: fifo 64}",
           "  - {from: gate.detections, to: blackout.detections, policy: fifo 64}\n"
           "  - {from: blackout.detections, to: tracker.detections, policy: fifo 64}");

@@ -4,8 +4,6 @@
 #include <gmock/gmock.h>
 
 #include <fstream>
-#include <sstream>
-
 #include <kestrel/messages/actuator_command.hpp>
 #include <kestrel/messages/attitude_target.hpp>
 #include <kestrel/messages/detections.hpp>
@@ -18,6 +16,7 @@
 #include <kestrel/messages/trajectory_setpoint.hpp>
 #include <kestrel/messages/vehicle_state.hpp>
 #include <map>
+#include <sstream>
 
 #include "kestrel/runtime/plugin_host.hpp"
 
@@ -66,10 +65,10 @@ TEST(MessageReference, EveryInTreeMessageDeclaresItsFieldsAndIsDocumented) {
       EXPECT_FALSE(f.type.empty()) << name << "." << f.name;
       EXPECT_FALSE(f.description.empty()) << name << "." << f.name;
       // The doc's tables name a nested field by its last part (`position` under `Detection`).
-      const std::string leaf = f.name.substr(f.name.find_last_of(".]") == std::string::npos
-                                                 ? 0
-                                                 : f.name.find_last_of(".]") + 1);
-      EXPECT_THAT(text, ::testing::HasSubstr("`" + leaf + "`")) << name << "." << f.name << " is not in docs/messages.md";
+      const std::string leaf =
+          f.name.substr(f.name.find_last_of(".]") == std::string::npos ? 0 : f.name.find_last_of(".]") + 1);
+      EXPECT_THAT(text, ::testing::HasSubstr("`" + leaf + "`"))
+          << name << "." << f.name << " is not in docs/messages.md";
     }
   }
 }

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <functional>
+#include <kestrel/geometry/frames.hpp>
 
 #include "lee_position_control.hpp"
 #include "multirotor_dynamics.hpp"
@@ -27,11 +28,6 @@ msg::TrajectorySetpoint setpoint_at(const Eigen::Vector3d& p, double yaw = 0.0) 
   s.position = p;
   s.yaw = yaw;
   return s;
-}
-
-double yaw_of(const Eigen::Quaterniond& q) {
-  const Eigen::Vector3d f = q * Eigen::Vector3d::UnitX();
-  return std::atan2(f.y(), f.x());
 }
 
 // Controller and simulator in one loop: the controller at 100 Hz on the true state, the
@@ -152,7 +148,7 @@ TEST(LeeController, TracksAYawTurn) {
   Flight flight({0, 0, 2});
   double peak = 0.0, drift = 0.0, late = 0.0;  // late: largest error from 6 s on
   flight.fly(setpoint_at({0, 0, 2}, M_PI / 2), 12.0, [&](double t) {
-    const double yaw = yaw_of(flight.state.orientation);
+    const double yaw = geometry::yaw_of(flight.state.orientation);
     peak = std::max(peak, yaw);
     drift = std::max(drift, (flight.state.position - Eigen::Vector3d(0, 0, 2)).norm());
     if (t >= 6.0) late = std::max(late, std::abs(yaw - M_PI / 2));
@@ -160,6 +156,6 @@ TEST(LeeController, TracksAYawTurn) {
   EXPECT_LT(late, 1.0 * M_PI / 180.0);
   // Yaw gains 0.15 and 0.18 on 0.0977 kg m^2: w_n = 1.24 rad/s, damping 0.74, slow and gentle.
   EXPECT_LT(peak, 1.05 * M_PI / 2);
-  EXPECT_NEAR(yaw_of(flight.state.orientation), M_PI / 2, 0.1 * M_PI / 180.0);
+  EXPECT_NEAR(geometry::yaw_of(flight.state.orientation), M_PI / 2, 0.1 * M_PI / 180.0);
   EXPECT_LT(drift, 0.02);  // turning in place moves the vehicle by a centimetre at most
 }

@@ -83,7 +83,9 @@ TEST(MultirotorDynamics, TorqueFreeSpinKeepsMomentumAndEnergy) {
   RigidBodyState s = at_rest({0, 0, 0});
   s.angular_velocity = {1.0, 2.0, 0.5};
   auto momentum = [&](const RigidBodyState& x) { return x.orientation * j.cwiseProduct(x.angular_velocity).eval(); };
-  auto energy = [&](const RigidBodyState& x) { return 0.5 * x.angular_velocity.dot(j.cwiseProduct(x.angular_velocity)); };
+  auto energy = [&](const RigidBodyState& x) {
+    return 0.5 * x.angular_velocity.dot(j.cwiseProduct(x.angular_velocity));
+  };
   const Eigen::Vector3d l0 = momentum(s);
   const double e0 = energy(s);
   const Eigen::VectorXd off = Eigen::VectorXd::Zero(6);

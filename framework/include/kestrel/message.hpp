@@ -91,10 +91,10 @@ struct Envelope {
 
 /// Declares the fields of message type T, in the header that defines T, after KESTREL_MESSAGE:
 /// KESTREL_MESSAGE_FIELDS(my::Scan, {"stamp", "Time", "ns", "", "capture time"}, ...).
-#define KESTREL_MESSAGE_FIELDS(T, ...)                                     \
-  template <>                                                              \
-  struct kestrel::MessageFields<T> {                                       \
-    static constexpr kestrel::MessageFieldDecl fields[] = {__VA_ARGS__};   \
+#define KESTREL_MESSAGE_FIELDS(T, ...)                                   \
+  template <>                                                            \
+  struct kestrel::MessageFields<T> {                                     \
+    static constexpr kestrel::MessageFieldDecl fields[] = {__VA_ARGS__}; \
   }
 
 KESTREL_MESSAGE(kestrel::AnyMessage, "*", "any message type");

@@ -22,8 +22,8 @@ struct Multirotor {
   double mass_kg = 1.56779;
   Eigen::Vector3d inertia_kg_m2{0.0347563, 0.0458929, 0.0977};  ///< diagonal, body axes
   std::vector<Rotor> rotors;
-  double thrust_constant = 8.54858e-6;   ///< N / (rad/s)^2
-  double moment_constant = 0.016;        ///< m: drag torque per newton of thrust
+  double thrust_constant = 8.54858e-6;  ///< N / (rad/s)^2
+  double moment_constant = 0.016;       ///< m: drag torque per newton of thrust
   double motor_time_constant_up_s = 0.0125;
   double motor_time_constant_down_s = 0.025;
   double max_rotor_speed_rad_s = 838.0;

@@ -8,6 +8,7 @@
 //              forward; `camera_offset_body` is its position in B.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <cmath>
 
 namespace kestrel::geometry {
 
@@ -36,6 +37,13 @@ struct CameraPose {
     return position_world + world_from_camera() * p_camera;
   }
 };
+
+/// Heading of a body (world yaw of its x axis, counter-clockwise from world +x seen from above),
+/// whatever its tilt.
+inline double yaw_of(const Eigen::Quaterniond& body_to_world) {
+  const Eigen::Vector3d forward = body_to_world * Eigen::Vector3d::UnitX();
+  return std::atan2(forward.y(), forward.x());
+}
 
 /// A level camera at `position` whose optical axis points along world yaw `yaw_rad`
 /// (0 = world +x, counter-clockwise seen from above).

@@ -19,8 +19,8 @@ struct ActuatorCommand {
 
 KESTREL_MESSAGE(kestrel::msg::ActuatorCommand, "kestrel.ActuatorCommand",
                 "collective thrust, body torques and rotor speeds");
-KESTREL_MESSAGE_FIELDS(kestrel::msg::ActuatorCommand,
-                       {"stamp", "Time", "ns", "", "time of the command"},
+KESTREL_MESSAGE_FIELDS(kestrel::msg::ActuatorCommand, {"stamp", "Time", "ns", "", "time of the command"},
                        {"thrust_n", "double", "N", "body", "collective thrust along body z"},
                        {"torque_nm", "Eigen::Vector3d", "N m", "body", "body torques"},
-                       {"rotor_speeds_rad_s", "vector<double>", "rad/s", "", "rotor speeds for the vehicle's mixer; empty when it takes thrust and torques"});
+                       {"rotor_speeds_rad_s", "vector<double>", "rad/s", "",
+                        "rotor speeds for the vehicle's mixer; empty when it takes thrust and torques"});

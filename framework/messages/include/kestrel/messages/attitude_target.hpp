@@ -21,8 +21,7 @@ struct AttitudeTarget {
 
 KESTREL_MESSAGE(kestrel::msg::AttitudeTarget, "kestrel.AttitudeTarget",
                 "desired attitude, body rates and collective thrust (for an autopilot's attitude loop)");
-KESTREL_MESSAGE_FIELDS(kestrel::msg::AttitudeTarget,
-                       {"stamp", "Time", "ns", "", "time of the command"},
+KESTREL_MESSAGE_FIELDS(kestrel::msg::AttitudeTarget, {"stamp", "Time", "ns", "", "time of the command"},
                        {"orientation", "Eigen::Quaterniond", "", "body to world", "desired attitude"},
                        {"body_rates", "Eigen::Vector3d", "rad/s", "body", "desired body rates"},
                        {"thrust_n", "double", "N", "body", "collective thrust along body z"},

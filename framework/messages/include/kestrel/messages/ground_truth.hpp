@@ -25,11 +25,11 @@ struct GroundTruth {
 
 KESTREL_MESSAGE(kestrel::msg::GroundTruth, "kestrel.GroundTruth",
                 "true object positions (world and camera frames) at a capture time");
-KESTREL_MESSAGE_FIELDS(kestrel::msg::GroundTruth,
-                       {"stamp", "Time", "ns", "", "the capture this truth belongs to"},
+KESTREL_MESSAGE_FIELDS(kestrel::msg::GroundTruth, {"stamp", "Time", "ns", "", "the capture this truth belongs to"},
                        {"objects", "vector<GroundTruthObject>", "", "", "every simulated intruder"},
                        {"objects[].id", "uint64", "", "", "the intruder's id, unique in a run"},
                        {"objects[].position_world", "Eigen::Vector3d", "m", "world", "position"},
-                       {"objects[].position_camera", "Eigen::Vector3d", "m", "camera", "position in the optical frame of the publishing camera"},
+                       {"objects[].position_camera", "Eigen::Vector3d", "m", "camera",
+                        "position in the optical frame of the publishing camera"},
                        {"objects[].velocity_world", "Eigen::Vector3d", "m/s", "world", "velocity"},
                        {"objects[].in_view", "bool", "", "", "inside the camera's field of view and depth range"});

@@ -7,8 +7,8 @@
 namespace kestrel::msg {
 
 struct NetCapture {
-  Time stamp{0};                ///< when the net closed on it
-  std::uint64_t object_id = 0;  ///< the intruder's ground-truth id
+  Time stamp{0};                                             ///< when the net closed on it
+  std::uint64_t object_id = 0;                               ///< the intruder's ground-truth id
   Eigen::Vector3d position_world = Eigen::Vector3d::Zero();  ///< where it was caught
 };
 

@@ -7,8 +7,8 @@
 namespace kestrel::msg {
 
 struct NetFire {
-  Time stamp{0};               ///< when the order is given
-  std::uint64_t target_id = 0;  ///< the track aimed at
+  Time stamp{0};                                          ///< when the order is given
+  std::uint64_t target_id = 0;                            ///< the track aimed at
   Eigen::Vector3d aim_error_m = Eigen::Vector3d::Zero();  ///< x_E^d - x_E at the order, camera frame
 };
 

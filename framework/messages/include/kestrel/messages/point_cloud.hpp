@@ -18,7 +18,7 @@ struct PointCloud {
 }  // namespace kestrel::msg
 
 KESTREL_MESSAGE(kestrel::msg::PointCloud, "kestrel.PointCloud", "PCL XYZ point cloud with capture stamp and frame");
-KESTREL_MESSAGE_FIELDS(kestrel::msg::PointCloud,
-                       {"stamp", "Time", "ns", "", "capture time of the images the points came from"},
-                       {"frame", "string", "", "", "the points' frame: \"camera\" (optical: x right, y down, z forward)"},
-                       {"points", "pcl::PointCloud<pcl::PointXYZ>::ConstPtr", "m", "in frame", "the points; shared, never modified"});
+KESTREL_MESSAGE_FIELDS(
+    kestrel::msg::PointCloud, {"stamp", "Time", "ns", "", "capture time of the images the points came from"},
+    {"frame", "string", "", "", "the points' frame: \"camera\" (optical: x right, y down, z forward)"},
+    {"points", "pcl::PointCloud<pcl::PointXYZ>::ConstPtr", "m", "in frame", "the points; shared, never modified"});

@@ -29,8 +29,7 @@ struct StereoFrame {
 
 KESTREL_MESSAGE(kestrel::msg::StereoFrame, "kestrel.StereoFrame",
                 "rectified left and right images, capture stamp and calibration");
-KESTREL_MESSAGE_FIELDS(kestrel::msg::StereoFrame,
-                       {"stamp", "Time", "ns", "", "capture time"},
+KESTREL_MESSAGE_FIELDS(kestrel::msg::StereoFrame, {"stamp", "Time", "ns", "", "capture time"},
                        {"frame_index", "uint64", "", "", "count of frames from this camera, from 0"},
                        {"left", "cv::Mat", "", "", "rectified left image, CV_8UC1 (grey) or CV_8UC3 (BGR)"},
                        {"right", "cv::Mat", "", "", "rectified right image, same size and type as left"},

@@ -19,8 +19,7 @@ struct TrajectorySetpoint {
 
 KESTREL_MESSAGE(kestrel::msg::TrajectorySetpoint, "kestrel.TrajectorySetpoint",
                 "desired position, velocity, acceleration and yaw");
-KESTREL_MESSAGE_FIELDS(kestrel::msg::TrajectorySetpoint,
-                       {"stamp", "Time", "ns", "", "when the setpoint applies"},
+KESTREL_MESSAGE_FIELDS(kestrel::msg::TrajectorySetpoint, {"stamp", "Time", "ns", "", "when the setpoint applies"},
                        {"position", "Eigen::Vector3d", "m", "world", "desired position"},
                        {"velocity", "Eigen::Vector3d", "m/s", "world", "desired velocity (feed-forward)"},
                        {"acceleration", "Eigen::Vector3d", "m/s^2", "world", "desired acceleration (feed-forward)"},

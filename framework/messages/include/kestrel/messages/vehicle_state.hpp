@@ -18,9 +18,9 @@ struct VehicleState {
 }  // namespace kestrel::msg
 
 KESTREL_MESSAGE(kestrel::msg::VehicleState, "kestrel.VehicleState", "vehicle pose, velocity and body rates (odometry)");
-KESTREL_MESSAGE_FIELDS(kestrel::msg::VehicleState,
-                       {"stamp", "Time", "ns", "", "time of the state"},
+KESTREL_MESSAGE_FIELDS(kestrel::msg::VehicleState, {"stamp", "Time", "ns", "", "time of the state"},
                        {"position", "Eigen::Vector3d", "m", "world", "position of the centre of mass"},
                        {"velocity", "Eigen::Vector3d", "m/s", "world", "velocity"},
-                       {"orientation", "Eigen::Quaterniond", "", "body to world", "attitude: rotates body-frame vectors into the world frame"},
+                       {"orientation", "Eigen::Quaterniond", "", "body to world",
+                        "attitude: rotates body-frame vectors into the world frame"},
                        {"angular_velocity", "Eigen::Vector3d", "rad/s", "body", "body rates"});
