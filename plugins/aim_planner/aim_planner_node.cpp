@@ -21,7 +21,7 @@
 namespace kestrel::aim {
 
 struct AimPlannerConfig {
-  enum class WhenLost { hold, search };
+  enum class WhenLost { hold, search, back_off };
   Eigen::Vector3d aim_point_m{0.0, 1.0, 2.0};
   Eigen::Vector3d camera_offset_m{0.1, 0.0, 0.0};
   double gain_1_s = 1.0;
@@ -29,6 +29,7 @@ struct AimPlannerConfig {
   double max_acceleration_m_s2 = 4.0;
   double max_yaw_rate_deg_s = 90.0;
   double takeoff_altitude_m = 2.0;
+  double search_advance_m = 0.0;
   double min_altitude_m = 0.5;
   double min_target_height_m = 0.5;
   double target_timeout_s = 1.0;
@@ -36,6 +37,8 @@ struct AimPlannerConfig {
   double target_r = 1.0;
   WhenLost when_lost = WhenLost::hold;
   double search_yaw_rate_deg_s = 20.0;
+  double back_off_distance_m = 5.0;
+  double back_off_height_m = 0.5;
   double capture_radius_m = 0.5;
   double dwell_s = 0.5;
   double net_flight_time_s = 0.4;
@@ -78,6 +81,11 @@ class AimPlannerNode final : public Node {
         .with_unit("m")
         .range(0.0, 1000.0)
         .describe("height to climb to and wait at before the first target");
+    c.param("search_advance_m", &C::search_advance_m)
+        .with_unit("m")
+        .range(0.0, 1000.0)
+        .describe("before the first target: fly this far ahead along the take-off heading, at take-off height, "
+                  "looking for it");
     c.param("min_altitude_m", &C::min_altitude_m)
         .with_unit("m")
         .range(0.0, 1000.0)
@@ -98,12 +106,23 @@ class AimPlannerNode final : public Node {
         .with_unit("m^2")
         .range(1e-9, 1e6)
         .describe("world-frame target estimate: measurement noise");
-    c.choice("when_lost", &C::when_lost, {{"hold", C::WhenLost::hold}, {"search", C::WhenLost::search}})
-        .describe("after the timeout: hold position and heading, or hold position and turn slowly");
+    c.choice("when_lost", &C::when_lost,
+             {{"hold", C::WhenLost::hold}, {"search", C::WhenLost::search}, {"back_off", C::WhenLost::back_off}})
+        .describe(
+            "after the timeout: hold position and heading; hold position and turn slowly; or back off to a standoff "
+            "facing where the target was last seen, where the wider view finds it again");
     c.param("search_yaw_rate_deg_s", &C::search_yaw_rate_deg_s)
         .with_unit("deg/s")
         .range(-360.0, 360.0)
         .describe("search: turn rate");
+    c.param("back_off_distance_m", &C::back_off_distance_m)
+        .with_unit("m")
+        .range(0.5, 100.0)
+        .describe("back_off: horizontal distance of the standoff from where the target was last seen");
+    c.param("back_off_height_m", &C::back_off_height_m)
+        .with_unit("m")
+        .range(-100.0, 100.0)
+        .describe("back_off: height of the standoff above where the target was last seen");
     c.param("capture_radius_m", &C::capture_radius_m)
         .with_unit("m")
         .range(0.01, 10.0)
@@ -180,6 +199,7 @@ class AimPlannerNode final : public Node {
       goal_->position.z() = std::max(goal_->position.z(), cfg_.min_altitude_m);
       goal_velocity_ = x.segment<3>(3);
       last_seen_ = t;
+      last_target_ = x.head<3>();
       error = cfg_.aim_point_m - in_camera;
       ++target_frames_;
       squared_error_ += error->squaredNorm();
@@ -197,12 +217,21 @@ class AimPlannerNode final : public Node {
       // A short loss: on towards the last aim pose, without feeding forward a velocity nobody sees.
       reference_->advance(*goal_, Eigen::Vector3d::Zero(), dt);
     } else if (goal_) {
-      if (!holding_) ++holds_;
+      if (!holding_) {
+        ++holds_;
+        standoff_ = back_off_pose(*hunter);
+      }
       holding_ = true;
-      const bool search = cfg_.when_lost == AimPlannerConfig::WhenLost::search;
-      reference_->hold(dt, search ? cfg_.search_yaw_rate_deg_s * M_PI / 180.0 : 0.0);
+      if (cfg_.when_lost == AimPlannerConfig::WhenLost::back_off) {
+        reference_->advance(standoff_, Eigen::Vector3d::Zero(), dt);
+      } else {
+        const bool search = cfg_.when_lost == AimPlannerConfig::WhenLost::search;
+        reference_->hold(dt, search ? cfg_.search_yaw_rate_deg_s * M_PI / 180.0 : 0.0);
+      }
     } else {
-      reference_->advance(takeoff_, Eigen::Vector3d::Zero(), dt);  // no target yet: climb and wait
+      // No target yet: climb, then look ahead (once at the take-off height: a hunter on the ground
+      // goes up before it goes forward).
+      reference_->advance(armed_ ? search_ : takeoff_, Eigen::Vector3d::Zero(), dt);
     }
     if (target) holding_ = false;
 
@@ -259,12 +288,28 @@ class AimPlannerNode final : public Node {
     takeoff_.position = hunter.position;
     takeoff_.position.z() = std::max(hunter.position.z(), cfg_.takeoff_altitude_m);
     takeoff_.yaw = geometry::yaw_of(hunter.orientation);
+    search_ = takeoff_;
+    search_.position += cfg_.search_advance_m * Eigen::Vector3d(std::cos(takeoff_.yaw), std::sin(takeoff_.yaw), 0.0);
+  }
+
+  // Back off from where the target was last seen, along the line to the hunter, and face it: from
+  // farther away the camera sees more, above and below as well as to the sides.
+  AimPose back_off_pose(const msg::VehicleState& hunter) const {
+    Eigen::Vector2d away = (hunter.position - last_target_).head<2>();
+    if (away.norm() < 1e-3) away = -Eigen::Vector2d(std::cos(reference_->yaw()), std::sin(reference_->yaw()));
+    away.normalize();
+    AimPose pose;
+    pose.position.head<2>() = last_target_.head<2>() + cfg_.back_off_distance_m * away;
+    pose.position.z() = std::max(cfg_.min_altitude_m, last_target_.z() + cfg_.back_off_height_m);
+    pose.yaw = std::atan2(-away.y(), -away.x());
+    return pose;
   }
 
   AimPlannerConfig cfg_;
   std::optional<AimReference> reference_;
   FireTrigger fire_{cfg_.capture_radius_m, cfg_.dwell_s, cfg_.cooldown_s};
-  AimPose takeoff_;
+  AimPose takeoff_, search_, standoff_;
+  Eigen::Vector3d last_target_ = Eigen::Vector3d::Zero();
   std::optional<AimPose> goal_;
   std::optional<tracking::KalmanTrack> estimate_;
   std::uint64_t target_id_ = 0;

@@ -2,6 +2,7 @@
 // EGL renderer. Defaults are the WithRobot oCamS-1CGN-U at 640x480.
 #include <cmath>
 #include <kestrel/geometry/frames.hpp>
+#include <kestrel/geometry/pinhole.hpp>
 #include <kestrel/messages/ground_truth.hpp>
 #include <kestrel/messages/stereo_frame.hpp>
 #include <kestrel/messages/vehicle_state.hpp>
@@ -170,9 +171,8 @@ class SimStereo final : public Node {
 
   bool in_view(const Eigen::Vector3d& p) const {
     if (p.z() < min_depth_ || p.z() > max_depth_) return false;
-    const double u = calibration_.fx * p.x() / p.z() + calibration_.cx;
-    const double v = calibration_.fy * p.y() / p.z() + calibration_.cy;
-    return u >= 0 && u < calibration_.width && v >= 0 && v < calibration_.height;
+    const Eigen::Vector3d uvd = geometry::to_pixel_disparity(calibration_, p);
+    return geometry::in_image(calibration_, uvd.x(), uvd.y());
   }
 
   // Grey (unless colour was asked for), plus sensor noise from the node's seeded generator.

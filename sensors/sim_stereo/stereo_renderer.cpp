@@ -11,8 +11,6 @@
 
 namespace kestrel::sim {
 
-double focal_from_hfov(int width, double hfov_deg) { return (width / 2.0) / std::tan(hfov_deg * M_PI / 360.0); }
-
 StereoRenderer::StereoRenderer(const msg::StereoCalibration& calibration) : calibration_(calibration) {}
 
 StereoRenderer::~StereoRenderer() = default;

@@ -8,6 +8,7 @@
 #include <opencv2/core/mat.hpp>
 
 #include "kestrel/geometry/frames.hpp"
+#include "kestrel/geometry/pinhole.hpp"
 #include "kestrel/messages/stereo_frame.hpp"
 
 namespace mrpt::opengl {
@@ -33,7 +34,6 @@ class StereoRenderer {
   std::unique_ptr<mrpt::opengl::CFBORender> fbo_;
 };
 
-/// fx (= fy) of a pinhole camera `width` pixels wide with horizontal field of view `hfov_deg`.
-double focal_from_hfov(int width, double hfov_deg);
+using geometry::focal_from_hfov;
 
 }  // namespace kestrel::sim

@@ -109,6 +109,15 @@ OUTCOMES = {
         ("r['video']['frames'] == frames and r['video']['unmatched'] == 0", "every camera frame is in the onboard video"),
         ("any(a['file'] == 'onboard.avi' for a in r['artifacts'])", "the video is in the report"),
     ]),
+    # The same engagement with the detection-level camera model: it must end as the rendered one
+    # does (seed 1: caught at 11.5 s), with the modelled detections as good as the rendered chain's.
+    "sim_intercept_fast": (30.0, [
+        ("r['control']['captured'] is True", "the intruder is caught"),
+        ("r['control']['time_to_capture_s'] <= 20.0", "within 20 s"),
+        ("r['hunter']['touchdowns'] == 0 and r['controller']['faults'] == 0", "no crash, no fault"),
+        ("r['camera']['detected'] >= 0.98 * r['camera']['in_view']", "the fitted recall is about 1 within 8 m"),
+        ("d['rmse_m']['z'] <= 0.15 and d['rmse_m']['x'] <= 0.06", "errors of the rendered chain's size"),
+    ]),
 }
 
 
