@@ -47,9 +47,10 @@ struct PlotArgs {
 
 struct SweepArgs {
   std::string graph;
-  std::vector<std::string> params;     // node.param=start:stop:step
+  std::vector<std::string> params;     // node.param=start:stop:step (a grid), or
+  std::string cases;                   // a CSV file of cases (see case_table.hpp)
   std::vector<std::string> overrides;  // fixed --set values
-  int seeds = 1;
+  std::optional<int> seeds;            // seeds 1..N per point; none: 1, or each case's own seed
   std::optional<double> duration;
   std::string report_dir;
   int jobs = 0;  // 0: one per core

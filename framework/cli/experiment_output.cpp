@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
+#include "csv_format.hpp"
 #include "kestrel/plot/line_plot.hpp"
 #include "output_files.hpp"
 
@@ -21,12 +23,13 @@ std::string number(double v) { return std::isnan(v) ? "n/a" : fmt::format("{:.4g
 
 std::string sweep_csv(const SweepPlan& plan, const SweepSummary& summary) {
   std::string csv;
-  for (const auto& p : plan.params) csv += p.key + ",";
+  for (const auto& p : plan.params) csv += csv_cell(p.key) + ",";
   csv += "seed,exit_code";
-  for (const auto& m : summary.metric_names) csv += "," + m;
+  for (const auto& m : summary.metric_names) csv += "," + csv_cell(m);
   csv += "\n";
   for (std::size_t j = 0; j < summary.runs.size(); ++j) {
-    for (const auto& v : plan.grid[plan.point_of(j)]) csv += v + ",";
+    // A case's value may hold commas (a YAML list): quoted, as RFC 4180 has it.
+    for (const auto& v : plan.grid[plan.point_of(j)]) csv += csv_cell(v) + ",";
     csv += fmt::format("{},{}", plan.seed_of(j), summary.exit_codes[j]);
     for (const auto& m : summary.metric_names) {
       const auto it = summary.runs[j].find(m);
@@ -54,11 +57,56 @@ bool any_undefined(const SweepSummary& summary) {
   return false;
 }
 
-// The point's swept values, as --set would take them.
+// The point's swept values, as --set would take them; a case also by its number (and so its
+// runs/ folder).
 std::string point_text(const SweepPlan& plan, std::size_t point) {
   std::vector<std::string> parts;
-  for (std::size_t i = 0; i < plan.params.size(); ++i) parts.push_back(plan.params[i].key + "=" + plan.grid[point][i]);
-  return fmt::format("{}", fmt::join(parts, ", "));
+  for (std::size_t i = 0; i < plan.params.size(); ++i)
+    if (!plan.grid[point][i].empty()) parts.push_back(plan.params[i].key + "=" + plan.grid[point][i]);
+  const std::string values = fmt::format("{}", fmt::join(parts, ", "));
+  if (!plan.from_cases()) return values;
+  return values.empty() ? fmt::format("case {}", point) : fmt::format("case {} ({})", point, values);
+}
+
+std::optional<double> number_in(const std::string& text) {
+  try {
+    std::size_t used = 0;
+    const double v = std::stod(text, &used);
+    if (used == text.size()) return v;
+  } catch (const std::exception&) {
+  }
+  return std::nullopt;
+}
+
+// What sweep.png plots the metrics against: the first swept parameter where every point's value
+// is a number, else the point's index (always for cases: random rows have no order to show).
+struct PlotAxis {
+  std::string name;  ///< the parameter, "case" or "point"
+  bool by_value = false;
+  std::vector<double> x;  ///< per point
+};
+
+PlotAxis plot_axis(const SweepPlan& plan) {
+  PlotAxis axis{plan.from_cases() ? "case" : plan.params[0].key, !plan.from_cases(), {}};
+  for (std::size_t g = 0; g < plan.grid.size() && axis.by_value; ++g) {
+    const auto v = number_in(plan.grid[g][0]);
+    if (v)
+      axis.x.push_back(*v);
+    else
+      axis.by_value = false;
+  }
+  if (axis.by_value) return axis;
+  if (!plan.from_cases()) axis.name = "point";
+  axis.x.clear();
+  for (std::size_t g = 0; g < plan.grid.size(); ++g) axis.x.push_back(static_cast<double>(g));
+  return axis;
+}
+
+// "3 seeds per point", or where the cases come from and how each runs.
+std::string runs_text(const SweepPlan& plan) {
+  if (!plan.from_cases()) return fmt::format("{} seeds per point", plan.seeds);
+  const std::string cases = fmt::format("{} cases from {}", plan.grid.size(), plan.cases_file);
+  return plan.case_seeds ? cases + ", each with its own seed" : fmt::format("{} x {} seeds", cases, plan.seeds);
 }
 
 // Judged metrics first (their plots say which way is better), each group in name order.
@@ -76,55 +124,70 @@ std::string write_sweep_outputs(const std::filesystem::path& dir, const std::str
   // Beside the CSV, so that `kestrel plot sweep.csv` labels its axes with the units.
   write_file(dir / "metrics_meta.json", nlohmann::json{{"metrics_meta", summary.meta.to_json()}}.dump(2) + "\n");
 
-  std::string md = fmt::format("# Sweep of {}\n\n{} runs ({} seeds per point); mean over seeds.\n\n", graph,
-                               plan.jobs.size(), plan.seeds);
-  // A column per metric that changes with the swept values; the others fit in a sentence.
+  const bool one_run_per_case = plan.from_cases() && plan.case_seeds;
+  std::string md = fmt::format("# Sweep of {}\n\n{} runs ({}){}.\n\n", graph, plan.jobs.size(), runs_text(plan),
+                               one_run_per_case ? "" : "; mean over seeds");
+  // A column per metric that changes with the swept values; the others fit in a sentence. Cases
+  // are numbered as their runs/ folders, with their seeds where the file gives them.
   const std::set<std::string>& shown = summary.varying.empty() ? summary.metric_names : summary.varying;
-  md += "|";
-  for (const auto& p : plan.params) md += " " + p.key + " |";
-  for (const auto& m : shown) md += fmt::format(" {} |", summary.meta.label(m));
-  md += "\n|";
-  for (std::size_t i = 0; i < plan.params.size() + shown.size(); ++i) md += "---|";
+  std::vector<std::string> columns;
+  if (plan.from_cases()) columns.push_back("case");
+  if (one_run_per_case) columns.push_back("seed");
+  for (const auto& p : plan.params) columns.push_back(p.key);
+  for (const auto& m : shown) columns.push_back(summary.meta.label(m));
+  md += fmt::format("| {} |\n|", fmt::join(columns, " | "));
+  for (std::size_t i = 0; i < columns.size(); ++i) md += "---|";
   md += "\n";
   for (std::size_t g = 0; g < plan.grid.size(); ++g) {
     md += "|";
-    for (const auto& v : plan.grid[g]) md += " " + v + " |";
+    if (plan.from_cases()) md += fmt::format(" {} |", g);
+    if (one_run_per_case) md += fmt::format(" {} |", plan.seed_of(g));  // one job per case
+    for (const auto& v : plan.grid[g]) md += " " + (v.empty() ? std::string("not set") : v) + " |";
     for (const auto& m : shown) md += fmt::format(" {} |", mean_cell(summary, g, m));
     md += "\n";
   }
+  const char* point = plan.from_cases() ? "case" : "point";
   std::vector<std::string> same;
   for (const auto& m : summary.metric_names)
     if (!shown.count(m)) same.push_back(summary.meta.label(m) + " = " + mean_cell(summary, 0, m));
-  if (!same.empty()) md += fmt::format("\nThe same at every point: {}.\n", fmt::join(same, ", "));
+  if (!same.empty())
+    md += fmt::format("\nThe same {} {}: {}.\n", plan.from_cases() ? "in every" : "at every", point,
+                      fmt::join(same, ", "));
   if (!summary.best.empty()) {
-    md += "\nBest point per metric (which way is better: the reports' metrics_meta):\n\n";
+    md += fmt::format("\nBest {} per metric (which way is better: the reports' metrics_meta):\n\n", point);
     for (const auto& [m, best] : summary.best)
-      md +=
-          fmt::format("- {} ({}): {} at {}{}\n", summary.meta.label(m), summary.meta.better_text(m), number(best.value),
-                      point_text(plan, best.point), best.ties ? fmt::format(" and {} other point(s)", best.ties) : "");
+      md += fmt::format("- {} ({}): {} at {}{}\n", summary.meta.label(m), summary.meta.better_text(m),
+                        number(best.value), point_text(plan, best.point),
+                        best.ties ? fmt::format(" and {} other {}(s)", best.ties, point) : "");
   }
 
-  // Metrics against the first swept parameter (other parameters mixed in).
-  const std::string& x = plan.params[0].key;
+  // Metrics against the first swept parameter (other parameters mixed in), or per point.
+  const PlotAxis axis = plot_axis(plan);
+  const std::string against = (axis.by_value ? " against " : " per ") + axis.name;
   const auto plotted = judged_first(std::vector<std::string>(shown.begin(), shown.end()), summary.meta);
   std::vector<plot::Panel> panels;
   for (const auto& m : plotted) {
     if (panels.size() == kSweepPanels) break;
     const std::string better = summary.meta.better_text(m);
-    plot::Series s{m, {}, {}, plot::Series::Style::line_and_points, plot::palette(panels.size()), 2};
-    for (std::size_t g = 0; g < plan.grid.size(); ++g) {
-      s.x.push_back(std::stod(plan.grid[g][0]));
-      s.y.push_back(summary.means[g].at(m));
-    }
+    // Points in no order (cases, words) are not joined by lines.
+    plot::Series s{m,
+                   {},
+                   {},
+                   axis.by_value ? plot::Series::Style::line_and_points : plot::Series::Style::points,
+                   plot::palette(panels.size()),
+                   axis.by_value ? 2 : 3};
+    s.x = axis.x;
+    for (std::size_t g = 0; g < plan.grid.size(); ++g) s.y.push_back(summary.means[g].at(m));
     panels.push_back(
-        {m + " against " + x + (better.empty() ? "" : " (" + better + ")"), x, summary.meta.label(m), {s}});
+        {m + against + (better.empty() ? "" : " (" + better + ")"), axis.name, summary.meta.label(m), {s}});
   }
   if (!panels.empty()) {
     write_png(dir / "sweep.png", panels, 900, 260);
-    md += "\n![metrics against " + x + "](sweep.png)\n";
+    md += "\n![metrics" + against + "](sweep.png)\n";
     if (plotted.size() > panels.size())
-      md += fmt::format("\nsweep.png shows {} of {} metrics; `kestrel plot sweep.csv --x {} --y METRIC` draws any.\n",
-                        panels.size(), plotted.size(), x);
+      md += fmt::format("\nsweep.png shows {} of {} metrics{}.\n", panels.size(), plotted.size(),
+                        axis.by_value ? fmt::format("; `kestrel plot sweep.csv --x {} --y METRIC` draws any", axis.name)
+                                      : std::string("; sweep.csv has every metric of every run"));
   }
   if (any_undefined(summary))
     md +=

@@ -72,11 +72,16 @@ int main(int argc, char** argv) {
                        "metrics_meta.json beside the CSV, as kestrel sweep writes it");
 
   SweepArgs sweep;
-  auto* sweep_cmd = app.add_subcommand("sweep", "Run a graph over a grid of parameter values and seeds, in parallel");
+  auto* sweep_cmd = app.add_subcommand(
+      "sweep", "Run a graph over a grid of parameter values, or a table of cases, and seeds, in parallel");
   sweep_cmd->add_option("graph", sweep.graph, "graph YAML file")->required();
-  sweep_cmd->add_option("--param", sweep.params, "node.param=start:stop:step (repeatable: a grid)")->required();
+  // --param or --cases, exactly one: plan_sweep says so, as it checks the rest.
+  sweep_cmd->add_option("--param", sweep.params, "node.param=start:stop:step (repeatable: a grid)");
+  sweep_cmd->add_option("--cases", sweep.cases,
+                        "CSV file instead of --param: a node.param per column (and optionally seed), a case per row");
   sweep_cmd->add_option("--set", sweep.overrides, "fixed override node.param=value (repeatable)");
-  sweep_cmd->add_option("--seeds", sweep.seeds, "seeds per grid point (1..N)")->check(CLI::Range(1, 100000));
+  sweep_cmd->add_option("--seeds", sweep.seeds, "seeds per grid point or case (1..N); not with a seed column")
+      ->check(CLI::Range(1, 100000));
   sweep_cmd->add_option("--duration", sweep.duration, "run length in seconds");
   sweep_cmd->add_option("--report", sweep.report_dir, "write DIR/sweep.csv, sweep.md, sweep.png and every run's report")
       ->required();

@@ -12,6 +12,7 @@
 
 #include "command_errors.hpp"
 #include "commands.hpp"
+#include "csv_format.hpp"
 #include "kestrel/error.hpp"
 #include "kestrel/plot/line_plot.hpp"
 #include "metrics_meta.hpp"
@@ -55,13 +56,9 @@ int plot_command(const PlotArgs& args) {
   return run_command_body("plot", [&] {
     std::ifstream in(args.csv);
     if (!in) throw Error("cannot open " + args.csv);
-    std::string line;
-    std::getline(in, line);
-    std::vector<std::string> header;
-    {
-      std::stringstream cells(line);
-      for (std::string cell; std::getline(cells, cell, ',');) header.push_back(cell);
-    }
+    const std::vector<CsvRecord> records = read_csv(in, args.csv);
+    if (records.empty()) throw Error(args.csv + " is empty: expected a header row");
+    const std::vector<std::string>& header = records.front().cells;
     auto column = [&](const std::string& name) {
       for (std::size_t i = 0; i < header.size(); ++i)
         if (header[i] == name) return i;
@@ -94,13 +91,8 @@ int plot_command(const PlotArgs& args) {
       panels.push_back(panel);
       panel_columns.push_back(columns);
     }
-    int number = 1;
-    while (std::getline(in, line)) {
-      ++number;
-      if (line.empty()) continue;
-      std::vector<std::string> cells;
-      std::stringstream stream(line);
-      for (std::string cell; std::getline(stream, cell, ',');) cells.push_back(cell);
+    for (std::size_t r = 1; r < records.size(); ++r) {
+      const std::vector<std::string>& cells = records[r].cells;
       // An empty cell is a gap in its curve; anything else must be a number.
       auto value = [&](std::size_t i) {
         if (i >= cells.size() || cells[i].empty()) return std::numeric_limits<double>::quiet_NaN();
@@ -110,7 +102,7 @@ int plot_command(const PlotArgs& args) {
           if (used == cells[i].size()) return v;
         } catch (const std::exception&) {
         }
-        throw Error(SourceLocation{args.csv, number, 0},
+        throw Error(SourceLocation{args.csv, records[r].line, 0},
                     "column " + header[i] + " is not a number: '" + cells[i] + "'");
       };
       for (std::size_t p = 0; p < panels.size(); ++p)

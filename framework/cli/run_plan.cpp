@@ -6,6 +6,8 @@
 #include <sstream>
 #include <thread>
 
+#include "case_table.hpp"
+#include "command_errors.hpp"
 #include "kestrel/error.hpp"
 
 namespace kestrel::cli {
@@ -45,16 +47,17 @@ std::vector<std::string> run_args(const std::string& graph, const std::vector<st
 
 std::vector<std::string> SweepPlan::sets_for(std::size_t point) const {
   std::vector<std::string> sets = overrides;
-  for (std::size_t i = 0; i < params.size(); ++i) sets.push_back(params[i].key + "=" + grid[point][i]);
+  for (std::size_t i = 0; i < params.size(); ++i)
+    if (!grid[point][i].empty()) sets.push_back(params[i].key + "=" + grid[point][i]);
   return sets;
 }
 
-SweepPlan plan_sweep(const SweepArgs& args) {
-  SweepPlan plan;
+namespace {
+
+// Every combination of the swept values.
+void plan_grid(const SweepArgs& args, SweepPlan& plan) {
   for (const auto& p : args.params) plan.params.push_back(parse_range(p));
-  if (plan.params.empty()) throw Error("give at least one --param node.param=start:stop:step");
-  plan.seeds = args.seeds;
-  plan.overrides = args.overrides;
+  plan.seeds = args.seeds.value_or(1);
   plan.grid = {{}};
   for (const auto& p : plan.params) {
     std::vector<std::vector<std::string>> next;
@@ -66,12 +69,58 @@ SweepPlan plan_sweep(const SweepArgs& args) {
       }
     plan.grid = next;
   }
+}
+
+// The rows of the cases file; returns each case's own seed if the file gives them.
+std::vector<int> plan_cases(const SweepArgs& args, SweepPlan& plan) {
+  CaseTable table = read_case_table(args.cases);
+  if (table.has_seeds && args.seeds)
+    throw CommandError(kUsage, "--seeds cannot be given with " + args.cases +
+                                   ": its seed column gives each case its seed (drop the column to run "
+                                   "every case with seeds 1..N)");
+  plan.cases_file = args.cases;
+  plan.case_lines = table.lines;
+  plan.case_seeds = table.has_seeds;
+  plan.seeds = table.has_seeds ? 1 : args.seeds.value_or(1);
+  for (std::size_t k = 0; k < table.keys.size(); ++k) {
+    SweptParam p{table.keys[k], {}};
+    for (const auto& row : table.values) p.values.push_back(row[k]);
+    plan.params.push_back(p);
+  }
+  plan.grid = std::move(table.values);
+  return table.seeds;
+}
+
+}  // namespace
+
+SweepPlan plan_sweep(const SweepArgs& args) {
+  if (!args.params.empty() && !args.cases.empty())
+    throw CommandError(kUsage, "give either --param (a grid) or --cases (a table of cases), not both");
+  if (args.params.empty() && args.cases.empty())
+    throw CommandError(kUsage,
+                       "give the points to run: --param node.param=start:stop:step (repeatable: a grid) or "
+                       "--cases FILE.csv (a table of cases)");
+  SweepPlan plan;
+  plan.overrides = args.overrides;
+  std::vector<int> case_seeds;
+  if (args.cases.empty())
+    plan_grid(args, plan);
+  else
+    case_seeds = plan_cases(args, plan);
   const std::filesystem::path runs = std::filesystem::path(args.report_dir) / "runs";
-  for (std::size_t g = 0; g < plan.grid.size(); ++g)
-    for (int seed = 1; seed <= args.seeds; ++seed) {
+  for (std::size_t g = 0; g < plan.grid.size(); ++g) {
+    std::vector<int> seeds;
+    if (plan.case_seeds)
+      seeds = {case_seeds[g]};
+    else
+      for (int seed = 1; seed <= plan.seeds; ++seed) seeds.push_back(seed);
+    for (const int seed : seeds) {
       const auto dir = runs / fmt::format("{:03}_seed{}", g, seed);
       plan.jobs.push_back({run_args(args.graph, plan.sets_for(g), seed, args.duration, dir), dir});
+      plan.job_points.push_back(g);
+      plan.job_seeds.push_back(seed);
     }
+  }
   return plan;
 }
 

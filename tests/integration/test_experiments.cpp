@@ -54,6 +54,47 @@ TEST(Experiments, SweepRunsTheGridWithEverySeed) {
   EXPECT_FALSE(fs::exists(dir / "bad" / "runs"));
 }
 
+// A table of cases instead of a grid: each row once with its seed, an empty cell leaving the
+// graph's value; a row with a value out of range stops the sweep before any run.
+TEST(Experiments, SweepRunsATableOfCasesWithTheirSeeds) {
+  const fs::path dir = fs::temp_directory_path() / "kestrel-sweep-cases-test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "cases.csv") << "# tracker settings drawn at random\n"
+                                      "tracker.filter.r,tracker.filter.q,seed\n"
+                                      "0.5,,3\n"
+                                      "\"2.0\",0.5,5\n";
+  ASSERT_EQ(kestrel({"sweep", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--cases", (dir / "cases.csv").string(),
+                     "--duration", "0.5", "--report", (dir / "out").string()}),
+            0);
+  const std::string csv = read(dir / "out" / "sweep.csv");
+  EXPECT_THAT(csv, ::testing::StartsWith("tracker.filter.r,tracker.filter.q,seed,exit_code,"));
+  EXPECT_THAT(csv, ::testing::HasSubstr("\n0.5,,3,0,"));
+  EXPECT_THAT(csv, ::testing::HasSubstr("\n2.0,0.5,5,0,"));
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3);  // header + one run per case
+  EXPECT_THAT(read(dir / "out" / "sweep.md"), ::testing::HasSubstr("2 cases from " + (dir / "cases.csv").string()));
+  EXPECT_TRUE(fs::exists(dir / "out" / "sweep.png"));
+  // Each run got its case's values and seed; an empty cell left the graph's q (1.0).
+  const auto first = nlohmann::json::parse(read(dir / "out" / "runs" / "000_seed3" / "report.json")).at("graph");
+  const auto second = nlohmann::json::parse(read(dir / "out" / "runs" / "001_seed5" / "report.json")).at("graph");
+  EXPECT_EQ(first.at("seed"), 3);
+  EXPECT_EQ(second.at("seed"), 5);
+  const auto filter = [](const nlohmann::json& graph) {
+    return graph.at("resolved").at("nodes").at("tracker").at("params").at("filter").at("params");
+  };
+  EXPECT_EQ(filter(first).at("r"), 0.5);
+  EXPECT_EQ(filter(first).at("q"), 1.0);
+  EXPECT_EQ(filter(second).at("r"), 2.0);
+  EXPECT_EQ(filter(second).at("q"), 0.5);
+  // Every case is checked first, not only the first and the last: the second row's r is out of
+  // range, so nothing runs.
+  std::ofstream(dir / "bad.csv") << "tracker.filter.r,seed\n1.0,1\n-1,2\n2.0,3\n";
+  EXPECT_EQ(kestrel({"sweep", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--cases", (dir / "bad.csv").string(),
+                     "--duration", "0.5", "--report", (dir / "bad").string()}),
+            3);
+  EXPECT_FALSE(fs::exists(dir / "bad" / "runs"));
+}
+
 TEST(Experiments, AbPairsSeedsAndNamesTheBetterGraph) {
   const fs::path dir = fs::temp_directory_path() / "kestrel-ab-test";
   fs::remove_all(dir);

@@ -7,8 +7,11 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <stdexcept>
 
+#include "command_errors.hpp"
+#include "csv_format.hpp"
 #include "experiment_analysis.hpp"
 #include "experiment_output.hpp"
 #include "kestrel/error.hpp"
@@ -307,4 +310,236 @@ TEST(AbOutputs, UndefinedMetricsAreLeftOutOfThePairsAndCounted) {
   EXPECT_EQ(json.at("metrics").at("tracking.lag_s").at("seeds"), 3);
   EXPECT_EQ(json.at("metrics").at("tracking.precision").at("undefined_seeds"), 4);
   EXPECT_TRUE(json.at("metrics").at("tracking.precision").at("mean_a").is_null());
+}
+
+namespace {
+
+// A cases file in a fresh folder; the plan's report folder is "out".
+SweepArgs cases_args(const std::string& name, const std::string& text) {
+  const fs::path dir = fresh_dir(name);
+  fs::create_directories(dir);
+  std::ofstream(dir / "cases.csv") << text;
+  SweepArgs args;
+  args.graph = "g.yaml";
+  args.cases = (dir / "cases.csv").string();
+  args.report_dir = "out";
+  return args;
+}
+
+// The message of the kestrel::Error that planning throws, or "" if it throws none.
+std::string plan_error(const SweepArgs& args) {
+  try {
+    plan_sweep(args);
+  } catch (const kestrel::Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// The exit code of the CommandError that planning throws, or -1.
+int plan_exit_code(const SweepArgs& args) {
+  try {
+    plan_sweep(args);
+  } catch (const CommandError& e) {
+    return e.code();
+  }
+  return -1;
+}
+
+}  // namespace
+
+TEST(RunPlan, CasesWithASeedColumnRunOnceEachWithTheirSeed) {
+  SweepArgs args = cases_args("kestrel-cases-seeded",
+                              "# drawn by a script\n"
+                              "tracker.filter.r,seed,intruder.shape\n"
+                              "0.5,7,line\n"
+                              "\n"
+                              "2.0,3,figure8\n"
+                              "1.25,7,circle\n");
+  args.overrides = {"c.z=3"};
+  args.duration = 2;
+  const SweepPlan plan = plan_sweep(args);
+  EXPECT_TRUE(plan.from_cases());
+  EXPECT_TRUE(plan.case_seeds);
+  ASSERT_EQ(plan.params.size(), 2u);
+  EXPECT_EQ(plan.params[0].key, "tracker.filter.r");
+  EXPECT_EQ(plan.params[1].key, "intruder.shape");
+  ASSERT_EQ(plan.grid.size(), 3u);
+  EXPECT_THAT(plan.grid[1], ElementsAre("2.0", "figure8"));
+  EXPECT_THAT(plan.case_lines, ElementsAre(3, 5, 6));  // lines in the file: comments and blanks count
+  ASSERT_EQ(plan.jobs.size(), 3u);
+  EXPECT_THAT(plan.job_seeds, ElementsAre(7, 3, 7));
+  EXPECT_EQ(plan.point_of(2), 2u);
+  EXPECT_EQ(plan.seed_of(1), 3);
+  EXPECT_EQ(plan.jobs[1].report_dir, fs::path("out/runs/001_seed3"));
+  EXPECT_THAT(plan.jobs[1].args, ElementsAre("run", "g.yaml", "--seed", "3", "--report", "out/runs/001_seed3",
+                                             "--no-progress", "--set", "c.z=3", "--set", "tracker.filter.r=2.0",
+                                             "--set", "intruder.shape=figure8", "--duration", "2"));
+  // Two cases may share a seed: their folders differ by the case's number.
+  EXPECT_EQ(plan.jobs[2].report_dir, fs::path("out/runs/002_seed7"));
+}
+
+TEST(RunPlan, CasesWithoutASeedColumnRunSeedsOneToN) {
+  SweepArgs args = cases_args("kestrel-cases-unseeded", "a.x,b.y\r\n1,2\r\n3,4\r\n");  // as Python's csv writes
+  const SweepPlan one = plan_sweep(args);
+  EXPECT_FALSE(one.case_seeds);
+  ASSERT_EQ(one.jobs.size(), 2u);  // one seed without --seeds
+  EXPECT_THAT(one.job_seeds, ElementsAre(1, 1));
+  EXPECT_THAT(one.grid[1], ElementsAre("3", "4"));  // no \r left in the last cell
+  args.seeds = 3;
+  const SweepPlan plan = plan_sweep(args);
+  ASSERT_EQ(plan.jobs.size(), 6u);
+  EXPECT_THAT(plan.job_points, ElementsAre(0, 0, 0, 1, 1, 1));
+  EXPECT_THAT(plan.job_seeds, ElementsAre(1, 2, 3, 1, 2, 3));
+  EXPECT_EQ(plan.point_of(4), 1u);
+  EXPECT_EQ(plan.seed_of(4), 2);
+  EXPECT_EQ(plan.jobs[4].report_dir, fs::path("out/runs/001_seed2"));
+  EXPECT_THAT(plan.sets_for(1), ElementsAre("a.x=3", "b.y=4"));
+}
+
+TEST(RunPlan, CaseCellsMayBeQuotedToHoldCommasAndQuotes) {
+  const SweepPlan plan = plan_sweep(cases_args("kestrel-cases-quoted",
+                                               "intruder.waypoints,n.label,tracker.filter.r\n"
+                                               "\"[1.0, 2.0, 3.0]\",\"say \"\"hi\"\"\",1\n"
+                                               "\"[4, 5]\",\"\",2\n"));
+  ASSERT_EQ(plan.grid.size(), 2u);
+  EXPECT_THAT(plan.grid[0], ElementsAre("[1.0, 2.0, 3.0]", "say \"hi\"", "1"));
+  EXPECT_THAT(plan.sets_for(0),
+              ElementsAre("intruder.waypoints=[1.0, 2.0, 3.0]", "n.label=say \"hi\"", "tracker.filter.r=1"));
+  // A quoted empty cell is empty too: not set.
+  EXPECT_THAT(plan.sets_for(1), ElementsAre("intruder.waypoints=[4, 5]", "tracker.filter.r=2"));
+}
+
+TEST(RunPlan, AnEmptyCaseCellLeavesTheParameterUnset) {
+  SweepArgs args = cases_args("kestrel-cases-empty", "a.x,b.y,seed\n1,,4\n,2,5\n");
+  args.overrides = {"c.z=3"};
+  const SweepPlan plan = plan_sweep(args);
+  EXPECT_THAT(plan.sets_for(0), ElementsAre("c.z=3", "a.x=1"));
+  EXPECT_THAT(plan.sets_for(1), ElementsAre("c.z=3", "b.y=2"));
+  EXPECT_THAT(plan.jobs[0].args, Not(::testing::Contains(StartsWith("b.y"))));
+  EXPECT_THAT(plan.jobs[1].args, Not(::testing::Contains(StartsWith("a.x"))));
+  EXPECT_THAT(plan.grid[1], ElementsAre("", "2"));  // sweep.csv keeps the cell empty
+}
+
+// Each malformed file is refused with the file and the line (and column for a quote), exit 2.
+TEST(RunPlan, MalformedCaseFilesAreRefusedAtTheirLine) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"a.x,b.y\n1,2\n3\n", ":3: 1 cell(s), but the header has 2 column(s)"},
+      {"a.x,b.y\n1,2,3\n", ":2: 3 cell(s), but the header has 2 column(s)"},
+      {"a.x\n\"[1, 2\n", ":2:1: unterminated quote"},
+      {"a.x,b.y\n\"1\"x,2\n", ":2:4: a comma or the end of the line must follow a closing quote"},
+      {"# comment\na.x,,b.y\n1,2,3\n", ":2: column 2 has no name"},
+      {"a.x,speed\n1,2\n", ":1: a column is a node.param (as --set takes it) or seed, not 'speed'"},
+      {"a.x,.y\n1,2\n", ":1: a column is a node.param (as --set takes it) or seed, not '.y'"},
+      {"a.x,seed\n1,0\n", ":2: the seed must be a whole number >= 1, not '0'"},
+      {"a.x,seed\n1,1\n2,-3\n", ":3: the seed must be a whole number >= 1, not '-3'"},
+      {"a.x,seed\n1,1.5\n", ":2: the seed must be a whole number >= 1, not '1.5'"},
+      {"a.x,seed\n1,x\n", ":2: the seed must be a whole number >= 1, not 'x'"},
+      {"a.x,seed\n1,\n", ":2: the seed must be a whole number >= 1, not ''"},
+      {"a.x,seed\n1,99999999999\n", ":2: the seed must be a whole number >= 1, not '99999999999'"},
+      {"a.x,b.y,a.x\n1,2,3\n", ":1: column 'a.x' appears twice"},
+      {"a.x,seed,seed\n1,2,3\n", ":1: column 'seed' appears twice"},
+      {"a.x,b.y\n\n# nothing drawn\n", ":1: no cases: the header is the last row"},
+      {"", ": no header row"},
+  };
+  for (const auto& [text, message] : cases) {
+    const SweepArgs args = cases_args("kestrel-cases-bad", text);
+    EXPECT_THAT(plan_error(args), HasSubstr(args.cases + message)) << text;
+    EXPECT_EQ(run_command_body("sweep", [&] { return static_cast<int>(plan_sweep(args).jobs.size()); }), kUsage)
+        << text;
+  }
+  SweepArgs missing;
+  missing.cases = (fresh_dir("kestrel-cases-missing") / "none.csv").string();
+  EXPECT_EQ(plan_error(missing), "cannot open the cases file " + missing.cases);
+}
+
+TEST(RunPlan, SeedsAreRefusedWithASeedColumn) {
+  SweepArgs args = cases_args("kestrel-cases-seeds", "a.x,seed\n1,4\n");
+  args.seeds = 2;
+  EXPECT_EQ(plan_exit_code(args), kUsage);
+  EXPECT_THAT(plan_error(args), HasSubstr("--seeds cannot be given with " + args.cases));
+  args.seeds = std::nullopt;
+  EXPECT_EQ(plan_sweep(args).jobs.size(), 1u);
+}
+
+TEST(RunPlan, ExactlyOneOfParamAndCases) {
+  SweepArgs both = cases_args("kestrel-cases-both", "a.x\n1\n");
+  both.params = {"a.x=1:2:1"};
+  EXPECT_EQ(plan_exit_code(both), kUsage);
+  EXPECT_THAT(plan_error(both), HasSubstr("either --param (a grid) or --cases (a table of cases), not both"));
+  SweepArgs neither;
+  neither.graph = "g.yaml";
+  neither.report_dir = "out";
+  EXPECT_EQ(plan_exit_code(neither), kUsage);
+  EXPECT_THAT(plan_error(neither), HasSubstr("--param node.param=start:stop:step"));
+  EXPECT_THAT(plan_error(neither), HasSubstr("--cases FILE.csv"));
+}
+
+// sweep.csv quotes a value with commas as a CSV reader expects; sweep.md numbers the cases and
+// says where they come from; sweep.png plots per case, whatever the values are.
+TEST(SweepOutputs, CasesAreNumberedQuotedAndPlottedPerCase) {
+  SweepArgs args = cases_args("kestrel-cases-outputs",
+                              "intruder.shape,intruder.waypoints,seed\n"
+                              "line,\"[1, 2]\",4\n"
+                              "circle,,9\n"
+                              "line,\"[3, 4]\",2\n");
+  args.report_dir = fresh_dir("kestrel-cases-outputs-report").string();
+  const SweepPlan plan = plan_sweep(args);
+  std::vector<BatchResult> results;
+  for (std::size_t j = 0; j < plan.jobs.size(); ++j) {
+    BatchResult r;
+    r.report = {{"tracking", {{"score", 0.1 * static_cast<double>(j)}}}, {"metrics_meta", kSweepMeta}};
+    results.push_back(r);
+  }
+  const SweepSummary summary = summarise_sweep(plan, results);
+  const std::string md = write_sweep_outputs(args.report_dir, args.graph, plan, summary);
+  EXPECT_THAT(md, HasSubstr("3 runs (3 cases from " + args.cases + ", each with its own seed).\n"));
+  EXPECT_THAT(md, HasSubstr("| case | seed | intruder.shape | intruder.waypoints | tracking.score |\n"));
+  EXPECT_THAT(md, HasSubstr("| 1 | 9 | circle | not set | 0.1 |\n"));
+  EXPECT_THAT(md, HasSubstr("- tracking.score (higher is better): 0.2 at case 2 (intruder.shape=line, "
+                            "intruder.waypoints=[3, 4])\n"));
+  EXPECT_THAT(md, HasSubstr("![metrics per case](sweep.png)"));
+  EXPECT_TRUE(fs::exists(fs::path(args.report_dir) / "sweep.png"));
+  EXPECT_EQ(read(fs::path(args.report_dir) / "sweep.csv"),
+            "intruder.shape,intruder.waypoints,seed,exit_code,tracking.score\n"
+            "line,\"[1, 2]\",4,0,0\n"
+            "circle,,9,0,0.1\n"
+            "line,\"[3, 4]\",2,0,0.2\n");
+
+  args.cases = cases_args("kestrel-cases-outputs-unseeded", "a.x\n1\n2\n").cases;
+  args.seeds = 2;
+  const SweepPlan unseeded = plan_sweep(args);
+  std::vector<BatchResult> runs(unseeded.jobs.size());
+  for (std::size_t j = 0; j < runs.size(); ++j) runs[j].report = {{"tracking", {{"score", 1.0 * j}}}};
+  EXPECT_THAT(write_sweep_outputs(args.report_dir, args.graph, unseeded, summarise_sweep(unseeded, runs)),
+              HasSubstr("4 runs (2 cases from " + args.cases + " x 2 seeds); mean over seeds.\n"));
+}
+
+// A grid whose first parameter is not a number is plotted per point instead of failing.
+TEST(SweepOutputs, AGridOfWordsIsPlottedPerPoint) {
+  SweepPlan plan;
+  plan.params = {{"intruder.shape", {"line", "circle"}}};
+  plan.grid = {{"line"}, {"circle"}};
+  plan.job_points = {0, 1};
+  plan.job_seeds = {1, 1};
+  plan.jobs.resize(2);
+  std::vector<BatchResult> results(2);
+  results[0].report = {{"tracking", {{"score", 0.5}}}};
+  results[1].report = {{"tracking", {{"score", 0.7}}}};
+  const fs::path dir = fresh_dir("kestrel-sweep-words");
+  std::string md;
+  ASSERT_NO_THROW(md = write_sweep_outputs(dir, "g.yaml", plan, summarise_sweep(plan, results)));
+  EXPECT_THAT(md, HasSubstr("| line | 0.5 |\n| circle | 0.7 |\n"));
+  EXPECT_THAT(md, HasSubstr("![metrics per point](sweep.png)"));
+  EXPECT_TRUE(fs::exists(dir / "sweep.png"));
+}
+
+TEST(CsvFormat, QuotesWhatARecordWouldSplitAndReadsItBack) {
+  EXPECT_EQ(csv_cell("1.5"), "1.5");
+  EXPECT_EQ(csv_cell("[1, 2]"), "\"[1, 2]\"");
+  EXPECT_EQ(csv_cell("say \"hi\""), "\"say \"\"hi\"\"\"");
+  std::istringstream in(csv_cell("[1, 2]") + "," + csv_cell("say \"hi\"") + ",,x\n");
+  const auto records = read_csv(in, "t.csv");
+  ASSERT_EQ(records.size(), 1u);
+  EXPECT_THAT(records[0].cells, ElementsAre("[1, 2]", "say \"hi\"", "", "x"));
 }
