@@ -6,6 +6,10 @@
 // sideways, so the intruder stays in view.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <optional>
+#include <kestrel/geometry/frames.hpp>
+
+#include "net_model.hpp"
 
 namespace kestrel::aim {
 
@@ -57,13 +61,27 @@ class AimReference {
   double yaw_, yaw_rate_ = 0.0;
 };
 
-/// Decides when to fire: the aim error has stayed within the capture radius for the dwell time,
-/// and the last shot is at least the cooldown ago.
+/// A target's predicted motion: position, velocity and acceleration now (world).
+struct TargetMotion {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+  Eigen::Vector3d acceleration = Eigen::Vector3d::Zero();
+  Eigen::Vector3d at(double tau) const { return position + velocity * tau + 0.5 * acceleration * tau * tau; }
+};
+
+/// The miss if the net were fired now: the least distance between the net's centre, on the
+/// launcher's own ballistics (`net`), and the predicted target, over the time the net is open.
+double predicted_miss(const net::NetModel& net, const geometry::CameraPose& launcher,
+                      const Eigen::Vector3d& launcher_velocity, const TargetMotion& target);
+
+/// Decides when to fire: the predicted miss has stayed within the capture radius for the dwell
+/// time (0: fire the moment it is), and the last shot is at least the cooldown ago.
 class FireTrigger {
  public:
   FireTrigger(double capture_radius_m, double dwell_s, double cooldown_s);
-  /// The aim error at time t (seconds), or no target. True when the net is to be fired now.
-  bool update(double t, const Eigen::Vector3d* error);
+  /// The predicted miss at time t (seconds), or none (no target). True when the net is to be
+  /// fired now.
+  bool update(double t, std::optional<double> miss_m);
 
  private:
   double radius_, dwell_, cooldown_;

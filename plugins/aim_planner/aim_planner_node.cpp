@@ -42,6 +42,7 @@ struct AimPlannerConfig {
   double capture_radius_m = 0.5;
   double dwell_s = 0.5;
   double net_flight_time_s = 0.4;
+  double net_open_s = 0.3;
   double cooldown_s = 3.0;
 };
 
@@ -131,6 +132,10 @@ class AimPlannerNode final : public Node {
         .with_unit("s")
         .range(0.0, 10.0)
         .describe("launch to widest opening: the shot leads the target by this much (0: no lead)");
+    c.param("net_open_s", &C::net_open_s)
+        .with_unit("s")
+        .range(0.0, 10.0)
+        .describe("how long the net stays open, flying on, after its widest opening (net_sim's open_for_s)");
     c.param("dwell_s", &C::dwell_s)
         .with_unit("s")
         .range(0.0, 60.0)
@@ -143,9 +148,11 @@ class AimPlannerNode final : public Node {
             "The paper's section 2.4: drives e_x = x_E^d - x_E to zero with the hunter's position along its heading, "
             "its height and its yaw (which keeps the target in view), through a setpoint limited in speed, "
             "acceleration and yaw rate, with the target's velocity fed forward. One setpoint per tracks message. "
-            "Fires when the predicted miss stays within capture_radius_m for dwell_s, at most once per cooldown_s: "
-            "where the target will be after net_flight_time_s (its world-frame estimate) against where the net will "
-            "open (the aim point carried by the hunter's velocity), so the shot leads a moving target.")
+            "Fires when the predicted miss stays within capture_radius_m for dwell_s, at most once per cooldown_s. The "
+            "predicted miss is the least distance, while the net is open (net_flight_time_s to net_flight_time_s + "
+            "net_open_s after the shot), between the net on its ballistics (net_sim's model: launched to reach the "
+            "aim point, inheriting the hunter's velocity) and the target extrapolated from its world-frame estimate, "
+            "so the shot leads a moving target.")
         .input(kTracks, "the tracker's tracks; the selected one is the target (camera frame)")
         .input(kOdometry, "the hunter's state", {.trigger = Trigger::latest})
         .output(kSetpoint, "where the hunter should be (world)")
@@ -178,7 +185,8 @@ class AimPlannerNode final : public Node {
     // A coasting track (no detection this frame) is the tracker's extrapolation, not a sighting:
     // aiming follows sightings only, and flies on towards the last one meanwhile.
     if (target && target->misses > 0) target = nullptr;
-    std::optional<Eigen::Vector3d> error, miss;
+    std::optional<Eigen::Vector3d> error;
+    std::optional<double> miss;
     if (estimate_ && t - last_seen_ > cfg_.target_timeout_s) estimate_.reset();  // too old to predict from
     if (estimate_) estimate_->predict(dt);
     if (target) {
@@ -203,12 +211,10 @@ class AimPlannerNode final : public Node {
       error = cfg_.aim_point_m - in_camera;
       ++target_frames_;
       squared_error_ += error->squaredNorm();
-      // The miss if the net were fired now: target and net opening, both net_flight_time_s ahead.
-      const double T = cfg_.net_flight_time_s;
-      const Eigen::Vector3d target_then = x.head<3>() + x.segment<3>(3) * T + 0.5 * x.segment<3>(6) * T * T;
-      const Eigen::Vector3d net_then =
-          camera.position_world + hunter->velocity * T + camera.world_from_camera() * cfg_.aim_point_m;
-      miss = target_then - net_then;
+      // The miss if the net were fired now, on the launcher's ballistics, against the target
+      // predicted at constant velocity over the time the net is open (the estimate's acceleration,
+      // extrapolated that far, adds more noise than it removes lag).
+      miss = predicted_miss(net_, camera, hunter->velocity, {x.head<3>(), x.segment<3>(3), Eigen::Vector3d::Zero()});
     }
 
     if (goal_ && target) {
@@ -244,11 +250,11 @@ class AimPlannerNode final : public Node {
     sp.yaw_rate = reference_->yaw_rate();
     ctx.publish(kSetpoint, std::move(sp));
 
-    if (fire_.update(t, miss ? &*miss : nullptr)) {
+    if (fire_.update(t, miss)) {
       ++fire_count_;
       if (!first_fire_) first_fire_ = t;
       ctx.log().info("fire at t = {:.2f} s: target {}, aim error {:.2f} m, predicted miss {:.2f} m", t, target->id,
-                     error->norm(), miss->norm());
+                     error->norm(), *miss);
       ctx.publish(kFire, msg::NetFire{tracks->stamp, target->id, *error});
     }
   }
@@ -308,6 +314,7 @@ class AimPlannerNode final : public Node {
   AimPlannerConfig cfg_;
   std::optional<AimReference> reference_;
   FireTrigger fire_{cfg_.capture_radius_m, cfg_.dwell_s, cfg_.cooldown_s};
+  net::NetModel net_{{cfg_.aim_point_m, cfg_.net_flight_time_s, cfg_.capture_radius_m, cfg_.net_open_s}};
   AimPose takeoff_, search_, standoff_;
   Eigen::Vector3d last_target_ = Eigen::Vector3d::Zero();
   std::optional<AimPose> goal_;
