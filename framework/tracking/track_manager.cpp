@@ -17,7 +17,7 @@ TrackManager::TrackManager(TrackerParts parts) : parts_(std::move(parts)) {
 }
 
 void TrackManager::start_track(const Eigen::Vector3d& detection) {
-  Track t{TrackStatus{next_id_++, 1, 1, 0, false, nullptr}, parts_.filter->start(detection)};
+  Track t{TrackStatus{next_id_++, 1, 1, 0, false, nullptr}, parts_.filter->start(detection), detection};
   t.status.filter = t.filter.get();
   t.status.confirmed = parts_.initiator->confirms(t.status);
   ++counts_.tracks_started;
@@ -49,6 +49,7 @@ msg::Tracks TrackManager::step(Time stamp, const std::vector<Eigen::Vector3d>& d
     ++s.age;
     if (const int d = a.row_to_col[i]; d >= 0) {
       tracks_[i].filter->update(detections[static_cast<std::size_t>(d)]);
+      tracks_[i].detection = detections[static_cast<std::size_t>(d)];
       ++s.hits;
       s.misses = 0;
     } else {
@@ -83,6 +84,7 @@ msg::Tracks TrackManager::step(Time stamp, const std::vector<Eigen::Vector3d>& d
     m.misses = t.status.misses;
     m.state = t.filter->state();
     m.covariance = t.filter->covariance();
+    if (t.status.misses == 0) m.detection = t.detection;
     out.items.push_back(std::move(m));
   }
   out.selected_id = parts_.selector->select(confirmed);

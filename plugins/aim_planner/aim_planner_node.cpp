@@ -190,10 +190,11 @@ class AimPlannerNode final : public Node {
     if (estimate_ && t - last_seen_ > cfg_.target_timeout_s) estimate_.reset();  // too old to predict from
     if (estimate_) estimate_->predict(dt);
     if (target) {
-      const Eigen::Vector3d in_camera = target->position();
-      // The target is estimated again in the world frame, from its positions there: its velocity
-      // in the camera frame would include the hunter's own motion, and feeding that forward would
-      // chase the hunter's tail.
+      // The target is estimated again in the world frame, from what was seen of it there: its
+      // velocity in the camera frame would include the hunter's own motion, and feeding that
+      // forward would chase the hunter's tail. The track's detection, not its filtered state: a
+      // filter in the camera frame lags whenever the camera turns.
+      const Eigen::Vector3d in_camera = target->detection.allFinite() ? target->detection : target->position();
       const Eigen::Vector3d intruder = camera.to_world(in_camera);
       if (!estimate_ || target->id != target_id_) {
         estimate_.emplace(intruder, tracking::KalmanConfig{cfg_.target_q, cfg_.target_r, 1.0});

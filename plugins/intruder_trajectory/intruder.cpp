@@ -24,6 +24,7 @@ struct IntruderConfig {
   Eigen::Vector3d line_start_m{5.0, 3.0, 2.0};
   Eigen::Vector3d line_end_m{5.0, -3.0, 2.0};
   double speed_mps = 1.0;
+  double line_acceleration_mps2 = 0.0;
   Eigen::Vector3d random_centre_m{5.0, 0.0, 2.0};
   Eigen::Vector3d random_half_extent_m{1.0, 1.5, 0.75};
   double max_speed_mps = 3.0;
@@ -65,6 +66,11 @@ class IntruderNode final : public Node {
     c.param("line_start_m", &C::line_start_m).with_unit("m").describe("line: start (world)");
     c.param("line_end_m", &C::line_end_m).with_unit("m").describe("line: end (world)");
     c.param("speed_mps", &C::speed_mps).with_unit("m/s").range(0.0, 100.0).describe("line: speed");
+    c.param("line_acceleration_mps2", &C::line_acceleration_mps2)
+        .with_unit("m/s^2")
+        .range(0.0, 1000.0)
+        .describe("line: acceleration from rest and braking to rest at the ends (0: full speed throughout, "
+                  "instant turns)");
     c.param("random_centre_m", &C::random_centre_m)
         .with_unit("m")
         .describe("random: centre of the box it stays in (world)");
@@ -134,7 +140,8 @@ class IntruderNode final : public Node {
             std::make_unique<FigureEight>(camera_, cfg.distance_m, cfg.half_width_m, cfg.half_height_m, cfg.period_s);
         break;
       case Shape::line:
-        trajectory_ = std::make_unique<StraightLine>(cfg.line_start_m, cfg.line_end_m, cfg.speed_mps, repeat);
+        trajectory_ = std::make_unique<StraightLine>(cfg.line_start_m, cfg.line_end_m, cfg.speed_mps, repeat,
+                                                     cfg.line_acceleration_mps2);
         break;
       case Shape::random:
         trajectory_ = std::make_unique<RandomManoeuvre>(cfg.random_centre_m, cfg.random_half_extent_m,

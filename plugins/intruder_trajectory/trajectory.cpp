@@ -24,13 +24,44 @@ State FigureEight::at(double t) const {
   return State{camera_.to_world(p_cam), camera_.world_from_camera() * v_cam};
 }
 
-StraightLine::StraightLine(const Eigen::Vector3d& start, const Eigen::Vector3d& end, double speed, bool bounce)
-    : start_(start), length_((end - start).norm()), speed_(speed), bounce_(bounce) {
+StraightLine::StraightLine(const Eigen::Vector3d& start, const Eigen::Vector3d& end, double speed, bool bounce,
+                           double acceleration)
+    : start_(start), length_((end - start).norm()), speed_(speed), bounce_(bounce), acceleration_(acceleration) {
   direction_ = length_ > 0 ? Eigen::Vector3d((end - start) / length_) : Eigen::Vector3d::Zero();
+  if (acceleration_ > 0 && speed_ > 0) {
+    // Up to speed over v^2 / 2a, unless half the line comes first.
+    top_speed_ = std::min(speed_, std::sqrt(acceleration_ * length_));
+    const double ramp = top_speed_ * top_speed_ / acceleration_;  // both ramps' length
+    pass_time_ = 2.0 * top_speed_ / acceleration_ + (length_ - ramp) / top_speed_;
+  }
+}
+
+std::pair<double, double> StraightLine::pass(double tau) const {
+  const double a = acceleration_, v = top_speed_, ramp_time = v / a;
+  if (tau <= ramp_time) return {0.5 * a * tau * tau, a * tau};
+  const double left = pass_time_ - tau;
+  if (left <= ramp_time) return {length_ - 0.5 * a * left * left, a * left};
+  return {0.5 * v * ramp_time + v * (tau - ramp_time), v};
 }
 
 State StraightLine::at(double t) const {
   if (length_ <= 0 || speed_ <= 0) return State{start_, Eigen::Vector3d::Zero()};
+  if (acceleration_ > 0) {
+    double tau = std::max(t, 0.0);
+    double sign = 1.0;
+    if (bounce_) {
+      tau = std::fmod(tau, 2.0 * pass_time_);
+      if (tau > pass_time_) {
+        tau -= pass_time_;
+        sign = -1.0;  // on the way back
+      }
+    } else if (tau >= pass_time_) {
+      return State{start_ + direction_ * length_, Eigen::Vector3d::Zero()};
+    }
+    const auto [s, speed] = pass(tau);
+    return sign > 0 ? State{start_ + direction_ * s, direction_ * speed}
+                    : State{start_ + direction_ * (length_ - s), -direction_ * speed};
+  }
   double s = speed_ * std::max(t, 0.0);
   double sign = 1.0;
   if (bounce_) {

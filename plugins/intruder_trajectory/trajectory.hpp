@@ -37,16 +37,25 @@ class FigureEight final : public Trajectory {
   double distance_, half_width_, half_height_, omega_;
 };
 
-/// A straight line from `start` to `end` at constant speed; then it holds, or flies back and forth.
+/// A straight line from `start` to `end` at `speed`; then it holds, or flies back and forth.
+/// With `acceleration` > 0 it flies as a multirotor can: from rest, up to speed, and down to rest
+/// at the end (a trapezoidal profile, triangular when the line is too short to reach the speed).
+/// With 0 it is at full speed throughout and turns instantly.
 class StraightLine final : public Trajectory {
  public:
-  StraightLine(const Eigen::Vector3d& start, const Eigen::Vector3d& end, double speed, bool bounce);
+  StraightLine(const Eigen::Vector3d& start, const Eigen::Vector3d& end, double speed, bool bounce,
+               double acceleration = 0.0);
   State at(double t) const override;
 
  private:
+  /// Distance along the line and speed, `tau` seconds into a pass from rest to rest.
+  std::pair<double, double> pass(double tau) const;
+
   Eigen::Vector3d start_, direction_;
   double length_, speed_;
   bool bounce_;
+  double acceleration_;
+  double top_speed_ = 0.0, pass_time_ = 0.0;  ///< with acceleration: the profile's peak and duration
 };
 
 /// Smooth random manoeuvres around a centre: on each axis a sum of sinusoids with random

@@ -1,5 +1,8 @@
 #include "net_model.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace kestrel::net {
 
 NetShot NetModel::fire(double t, const geometry::CameraPose& launcher, const Eigen::Vector3d& launcher_velocity) const {
@@ -26,6 +29,22 @@ bool NetModel::open(const NetShot& shot, double t) const {
 
 bool NetModel::catches(const NetShot& shot, double t, const Eigen::Vector3d& target) const {
   return open(shot, t) && (position(shot, t) - target).norm() <= p_.radius_m;
+}
+
+std::optional<double> NetModel::sweep(const NetShot& shot, double t0, const Eigen::Vector3d& from, double t1,
+                                      const Eigen::Vector3d& to, double& closest) const {
+  constexpr double kStep = 0.002;  // s: at 10 m/s closing speed, 2 cm between checks
+  const int steps = std::max(1, static_cast<int>(std::ceil((t1 - t0) / kStep)));
+  for (int i = 0; i <= steps; ++i) {
+    const double w = static_cast<double>(i) / steps;
+    const double t = t0 + w * (t1 - t0);
+    if (!open(shot, t)) continue;
+    const Eigen::Vector3d target = from + w * (to - from);
+    const double d = (position(shot, t) - target).norm();
+    closest = std::min(closest, d);
+    if (d <= p_.radius_m) return t;
+  }
+  return std::nullopt;
 }
 
 }  // namespace kestrel::net

@@ -7,6 +7,7 @@
 // centre comes within its radius while it is open.
 #include <Eigen/Core>
 #include <kestrel/geometry/frames.hpp>
+#include <optional>
 
 namespace kestrel::net {
 
@@ -37,6 +38,12 @@ class NetModel {
   bool open(const NetShot& shot, double t) const;
   /// True when the net is open at t and `target` (world) is within its radius.
   bool catches(const NetShot& shot, double t, const Eigen::Vector3d& target) const;
+  /// The net against an intruder moving in a straight line from `from` (at t0) to `to` (at t1),
+  /// checked every few milliseconds: a net several metres per second fast crosses a sampled
+  /// intruder between two samples. The first time within [t0, t1] at which it catches, if any;
+  /// `closest` is lowered to the least distance while open.
+  std::optional<double> sweep(const NetShot& shot, double t0, const Eigen::Vector3d& from, double t1,
+                              const Eigen::Vector3d& to, double& closest) const;
   /// True once the net can no longer catch anything.
   bool spent(const NetShot& shot, double t) const { return t > shot.fired_at + p_.flight_time_s + p_.open_for_s; }
 

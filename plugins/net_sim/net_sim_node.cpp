@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 #include <kestrel/geometry/frames.hpp>
 #include <kestrel/messages/ground_truth.hpp>
 #include <kestrel/messages/net_capture.hpp>
@@ -80,8 +81,9 @@ class NetSimNode final : public Node {
     const geometry::CameraPose launcher =
         geometry::camera_on_body(hunter->position, hunter->orientation, cfg_.camera_offset_m);
     if (ctx.triggered_by(kFire)) {
-      shots_.push_back(model_.fire(t, launcher, hunter->velocity));
+      shots_.push_back({model_.fire(t, launcher, hunter->velocity), fire_times_.size()});
       fire_times_.push_back(t);
+      closest_.push_back(std::numeric_limits<double>::infinity());
       if (!first_fire_) first_fire_ = t;
       return;
     }
@@ -99,15 +101,20 @@ class NetSimNode final : public Node {
         ++aligned_samples_;
       }
       keep(tt, error.norm(), hunter->position, intruder->position_world);
-      for (const auto& shot : shots_)
-        if (model_.catches(shot, tt, intruder->position_world)) {
-          captured_at_ = tt;
-          ctx.log().info("intruder {} caught at t = {:.2f} s, ({:.2f}, {:.2f}, {:.2f}) m", intruder->id, tt,
+      // Each shot in flight against the intruder since its last sample (it moved in a straight
+      // line meanwhile); the report also keeps by how much a miss missed.
+      const double t0 = previous_ ? previous_->first : tt;
+      const Eigen::Vector3d from = previous_ ? previous_->second : intruder->position_world;
+      for (const auto& [shot, index] : shots_)
+        if (const auto caught = model_.sweep(shot, t0, from, tt, intruder->position_world, closest_[index])) {
+          captured_at_ = *caught;
+          ctx.log().info("intruder {} caught at t = {:.3f} s, ({:.2f}, {:.2f}, {:.2f}) m", intruder->id, *caught,
                          intruder->position_world.x(), intruder->position_world.y(), intruder->position_world.z());
           ctx.publish(kCapture, msg::NetCapture{truth->stamp, intruder->id, intruder->position_world});
           break;
         }
-      std::erase_if(shots_, [&](const NetShot& s) { return model_.spent(s, tt); });
+      previous_ = {tt, intruder->position_world};
+      std::erase_if(shots_, [&](const auto& s) { return model_.spent(s.first, tt); });
     }
   }
 
@@ -125,6 +132,7 @@ class NetSimNode final : public Node {
          {"time_to_align_s", maybe(aligned_at_)},
          {"time_to_first_fire_s", maybe(first_fire_)},
          {"fire_count", fire_times_.size()},
+         {"shots", shots_json()},
          {"captured", captured_at_.has_value()},
          {"time_to_capture_s", maybe(captured_at_)}},
         fmt::format(
@@ -136,6 +144,7 @@ class NetSimNode final : public Node {
     ctx.describe_metric(s + ".time_to_align_s", "s", false);
     ctx.describe_metric(s + ".time_to_first_fire_s", "s", false);
     ctx.describe_quantity(s + ".fire_count");
+    ctx.describe_quantity(s + ".shots");
     ctx.describe_metric(s + ".captured", "", true);
     ctx.describe_metric(s + ".time_to_capture_s", "s", false);
     if (ctx.keeps_artifacts() && t_.size() >= 2) {
@@ -150,6 +159,16 @@ class NetSimNode final : public Node {
   explicit NetSimNode(const NetSimConfig& cfg)
       : cfg_(cfg),
         model_(NetParams{cfg.open_point_m, cfg.flight_time_s, cfg.radius_m, cfg.open_for_s, cfg.gravity_m_s2}) {}
+
+  // Each shot: when, and how near the net's centre came to the intruder while open (null: the
+  // run ended or the intruder was caught by an earlier shot before it opened).
+  nlohmann::json shots_json() const {
+    nlohmann::json shots = nlohmann::json::array();
+    for (std::size_t i = 0; i < fire_times_.size(); ++i)
+      shots.push_back({{"t_s", fire_times_[i]},
+                       {"closest_m", std::isfinite(closest_[i]) ? nlohmann::json(closest_[i]) : nlohmann::json()}});
+    return shots;
+  }
 
   void keep(double t, double error, const Eigen::Vector3d& hunter, const Eigen::Vector3d& intruder) {
     if (static_cast<std::int64_t>(t_.size()) >= cfg_.max_samples) return;
@@ -198,7 +217,9 @@ class NetSimNode final : public Node {
 
   NetSimConfig cfg_;
   NetModel model_;
-  std::vector<NetShot> shots_;
+  std::vector<std::pair<NetShot, std::size_t>> shots_;  ///< in flight, with their index in fire_times_
+  std::vector<double> closest_;                          ///< per shot: nearest approach while open
+  std::optional<std::pair<double, Eigen::Vector3d>> previous_;  ///< the intruder's last sample
   std::vector<double> fire_times_;
   std::optional<double> first_fire_, aligned_at_, captured_at_;
   double squared_error_ = 0.0;

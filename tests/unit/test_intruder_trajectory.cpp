@@ -63,6 +63,37 @@ TEST(StraightLine, HoldsOrBouncesAtTheEnd) {
   expect_near(bounce.at(5.0).velocity, {2, 0, 0});
 }
 
+// A line of 6 m at 2 m/s with 2 m/s^2 at the ends: 1 s up to speed over 1 m, 2 s at speed over
+// 4 m, 1 s down to rest over 1 m; a pass takes 4 s.
+TEST(StraightLine, WithAnAccelerationItStartsAndTurnsAsAMultirotorCan) {
+  const StraightLine line({0, 0, 0}, {6, 0, 0}, 2.0, true, 2.0);
+  expect_near(line.at(0.0).position, {0, 0, 0});
+  expect_near(line.at(0.0).velocity, {0, 0, 0});
+  expect_near(line.at(0.5).position, {0.25, 0, 0});
+  expect_near(line.at(0.5).velocity, {1, 0, 0});
+  expect_near(line.at(2.0).position, {3, 0, 0});
+  expect_near(line.at(2.0).velocity, {2, 0, 0});
+  expect_near(line.at(3.5).position, {5.75, 0, 0});
+  expect_near(line.at(3.5).velocity, {1, 0, 0});
+  expect_near(line.at(4.0).position, {6, 0, 0});  // at rest at the end...
+  expect_near(line.at(4.0).velocity, {0, 0, 0});
+  expect_near(line.at(4.5).position, {5.75, 0, 0});  // ...and back
+  expect_near(line.at(4.5).velocity, {-1, 0, 0});
+  expect_near(line.at(8.0).position, {0, 0, 0});
+  // Position and velocity agree (velocity is the derivative), and no step exceeds the acceleration.
+  for (double t = 0.0; t < 16.0; t += 0.01) {
+    const State a = line.at(t), b = line.at(t + 0.01);
+    EXPECT_NEAR((b.position - a.position).x() / 0.01, 0.5 * (a.velocity + b.velocity).x(), 1e-6) << t;
+    EXPECT_LE((b.velocity - a.velocity).norm() / 0.01, 2.0 + 1e-6) << t;
+  }
+  // Too short to reach the speed: a triangle, peaking at sqrt(a L) = 1 m/s over 0.5 m.
+  const StraightLine short_line({0, 0, 0}, {0.5, 0, 0}, 2.0, false, 2.0);
+  expect_near(short_line.at(0.5).velocity, {1, 0, 0});
+  expect_near(short_line.at(1.0).position, {0.5, 0, 0});
+  expect_near(short_line.at(5.0).position, {0.5, 0, 0});
+  expect_near(short_line.at(5.0).velocity, {0, 0, 0});
+}
+
 TEST(RandomManoeuvre, StaysInItsBoxUnderItsSpeedLimitAndReproduces) {
   const Eigen::Vector3d centre(5, 0, 2), half(1.0, 1.5, 0.75);
   const RandomManoeuvre a(centre, half, 3.0, 42), b(centre, half, 3.0, 42), c(centre, half, 3.0, 43);

@@ -56,6 +56,7 @@ class TrackManager {
   struct Track {
     TrackStatus status;
     std::unique_ptr<TrackFilter> filter;
+    Eigen::Vector3d detection = Eigen::Vector3d::Zero();  ///< the last one associated
   };
   void start_track(const Eigen::Vector3d& detection);
 

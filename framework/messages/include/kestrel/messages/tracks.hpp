@@ -2,6 +2,7 @@
 // The tracks a tracker maintains, and which one is the selected target.
 #include <Eigen/Core>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +19,10 @@ struct Track {
   /// Filter state; for the constant-acceleration model [x y z vx vy vz ax ay az].
   Eigen::VectorXd state;
   Eigen::MatrixXd covariance;
+  /// The detection associated with the track at this update; NaN when it coasted (misses > 0).
+  /// What was seen, unfiltered: a consumer that re-estimates the target in another frame (the
+  /// aim, in the world while the camera turns) takes it rather than the filtered state.
+  Eigen::Vector3d detection = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
 
   Eigen::Vector3d position() const { return state.head<3>(); }
 };
@@ -52,4 +57,6 @@ KESTREL_MESSAGE_FIELDS(kestrel::msg::Tracks,
                         "filter state; constant acceleration: [x y z vx vy vz ax ay az]"},
                        {"items[].covariance", "Eigen::MatrixXd", "squares of the state's units", "in frame",
                         "state covariance, same order as state"},
+                       {"items[].detection", "Eigen::Vector3d", "m", "in frame",
+                        "the detection associated at this update; NaN when the track coasted"},
                        {"selected_id", "optional<uint64>", "", "", "id of the target to aim at, if any"});
