@@ -30,9 +30,7 @@ void check(const DetectionModelParams& p) {
 StereoDetectionModel::StereoDetectionModel(DetectionModelParams params) : params_(std::move(params)) { check(params_); }
 
 bool StereoDetectionModel::visible(const Eigen::Vector3d& p) const {
-  if (!(p.z() >= params_.min_depth_m && p.z() <= params_.max_depth_m)) return false;
-  const Eigen::Vector3d uvd = geometry::to_pixel_disparity(params_.camera, p);
-  return geometry::in_image(params_.camera, uvd.x(), uvd.y());
+  return geometry::in_view(params_.camera, params_.min_depth_m, params_.max_depth_m, p);
 }
 
 double StereoDetectionModel::detection_probability(double depth) const {

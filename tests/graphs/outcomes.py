@@ -97,13 +97,13 @@ OUTCOMES = {
          "holds the stepped-to point to 2 cm"),
         ("r['hunter']['max_tilt_deg'] <= 30", "a 1 m step needs no steep tilt"),
     ]),
-    # The closed loop: take-off, then the intruder (a figure-8 6 m ahead) is brought within the
-    # net's reach of x_E^d and caught, within the graph's 30 s (seed 1: aligned at 6.2 s, caught at
-    # 25.8 s; docs/control.md says why it takes that long).
+    # The closed loop: take-off, then the intruder (a figure-8 6 m ahead) is caught by a shot that
+    # leads it (seed 1: fired at 3.5 s, caught at 3.9 s, before the aim error ever came within the
+    # net's radius: the shot is judged on the predicted miss).
     "sim_intercept": (30.0, [
-        ("r['control']['time_to_align_s'] is not None", "the aim error came within the net's radius"),
+        ("r['control']['captured'] is True and r['control']['time_to_capture_s'] <= 15.0",
+         "the intruder is caught within 15 s"),
         ("r['control']['fire_count'] >= 1", "the net was fired"),
-        ("r['control']['captured'] is True", "the intruder is caught"),
         ("r['hunter']['touchdowns'] == 0", "no crash into the ground"),
         ("r['controller']['faults'] == 0", "finite setpoints and states throughout"),
         ("r['video']['frames'] == frames and r['video']['unmatched'] == 0", "every camera frame is in the onboard video"),

@@ -31,4 +31,11 @@ inline bool in_image(const msg::StereoCalibration& c, double u, double v) {
   return u >= 0.0 && u < c.width && v >= 0.0 && v < c.height;
 }
 
+/// True when a camera-frame point lies within [min_depth, max_depth] and images inside the picture.
+inline bool in_view(const msg::StereoCalibration& c, double min_depth, double max_depth, const Eigen::Vector3d& p) {
+  if (!(p.z() >= min_depth && p.z() <= max_depth)) return false;
+  const Eigen::Vector3d uvd = to_pixel_disparity(c, p);
+  return in_image(c, uvd.x(), uvd.y());
+}
+
 }  // namespace kestrel::geometry
