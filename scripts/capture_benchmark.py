@@ -90,7 +90,9 @@ def failure_cause(r):
     if not aim.get("target_frames"):
         return "never saw the intruder"
     if c.get("fire_count", 0) > 0:
-        return f"fired {c['fire_count']} time(s) and missed"
+        closest = [s["closest_m"] for s in c.get("shots", []) if s.get("closest_m") is not None]
+        best = f", the nearest by {min(closest):.2f} m" if closest else ""
+        return f"fired {c['fire_count']} time(s) and missed{best}"
     if c.get("time_to_align_s") is None:
         return "never brought the intruder within the net's radius of x_E^d"
     if aim.get("holds", 0) > 0 and aim.get("target_frames", 0) < 0.5 * aim.get("frames", 1):

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <kestrel/geometry/frames.hpp>
+#include <limits>
 
 namespace kestrel::aim {
 

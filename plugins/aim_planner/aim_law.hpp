@@ -6,8 +6,8 @@
 // sideways, so the intruder stays in view.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
-#include <optional>
 #include <kestrel/geometry/frames.hpp>
+#include <optional>
 
 #include "net_model.hpp"
 

@@ -85,8 +85,9 @@ class AimPlannerNode final : public Node {
     c.param("search_advance_m", &C::search_advance_m)
         .with_unit("m")
         .range(0.0, 1000.0)
-        .describe("before the first target: fly this far ahead along the take-off heading, at take-off height, "
-                  "looking for it");
+        .describe(
+            "before the first target: fly this far ahead along the take-off heading, at take-off height, "
+            "looking for it");
     c.param("min_altitude_m", &C::min_altitude_m)
         .with_unit("m")
         .range(0.0, 1000.0)

@@ -69,8 +69,9 @@ class IntruderNode final : public Node {
     c.param("line_acceleration_mps2", &C::line_acceleration_mps2)
         .with_unit("m/s^2")
         .range(0.0, 1000.0)
-        .describe("line: acceleration from rest and braking to rest at the ends (0: full speed throughout, "
-                  "instant turns)");
+        .describe(
+            "line: acceleration from rest and braking to rest at the ends (0: full speed throughout, "
+            "instant turns)");
     c.param("random_centre_m", &C::random_centre_m)
         .with_unit("m")
         .describe("random: centre of the box it stays in (world)");

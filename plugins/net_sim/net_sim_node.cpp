@@ -7,7 +7,6 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <limits>
 #include <kestrel/geometry/frames.hpp>
 #include <kestrel/messages/ground_truth.hpp>
 #include <kestrel/messages/net_capture.hpp>
@@ -15,6 +14,7 @@
 #include <kestrel/messages/vehicle_state.hpp>
 #include <kestrel/plot/line_plot.hpp>
 #include <kestrel/plugin.hpp>
+#include <limits>
 #include <optional>
 
 #include "net_model.hpp"
@@ -217,8 +217,8 @@ class NetSimNode final : public Node {
 
   NetSimConfig cfg_;
   NetModel model_;
-  std::vector<std::pair<NetShot, std::size_t>> shots_;  ///< in flight, with their index in fire_times_
-  std::vector<double> closest_;                          ///< per shot: nearest approach while open
+  std::vector<std::pair<NetShot, std::size_t>> shots_;          ///< in flight, with their index in fire_times_
+  std::vector<double> closest_;                                 ///< per shot: nearest approach while open
   std::optional<std::pair<double, Eigen::Vector3d>> previous_;  ///< the intruder's last sample
   std::vector<double> fire_times_;
   std::optional<double> first_fire_, aligned_at_, captured_at_;

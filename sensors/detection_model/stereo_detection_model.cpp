@@ -14,9 +14,10 @@ void check(const DetectionModelParams& p) {
   if (!(p.min_depth_m > 0 && p.min_depth_m < p.max_depth_m))
     throw Error("detection model: need 0 < min_depth_m < max_depth_m");
   if (p.recall_depth_m.empty() || p.recall_depth_m.size() != p.recall.size())
-    throw Error(fmt::format("detection model: recall_depth_m ({} values) and recall ({} values) must be non-empty "
-                            "and of one length",
-                            p.recall_depth_m.size(), p.recall.size()));
+    throw Error(
+        fmt::format("detection model: recall_depth_m ({} values) and recall ({} values) must be non-empty "
+                    "and of one length",
+                    p.recall_depth_m.size(), p.recall.size()));
   for (std::size_t i = 0; i < p.recall.size(); ++i) {
     if (!(p.recall[i] >= 0.0 && p.recall[i] <= 1.0))
       throw Error(fmt::format("detection model: recall[{}] = {} is not a probability", i, p.recall[i]));

@@ -18,16 +18,16 @@
 namespace kestrel::sensors {
 
 struct DetectionModelParams {
-  msg::StereoCalibration camera;            ///< the camera whose chain is modelled
-  double min_depth_m = 0.5;                 ///< nearer than this, nothing is detected
-  double max_depth_m = 8.0;                 ///< farther than this, nothing is detected
-  Eigen::Vector2d centroid_sigma_px{2.0, 2.0};  ///< image column and row of the centroid
-  double disparity_sigma_px = 0.15;          ///< the cluster's mean disparity
-  double disparity_bias_px = 0.0;            ///< added to it (> 0: detections too near)
-  Eigen::Vector3d object_sigma_m{0.0, 0.0, 0.0};  ///< centroid against object centre (camera frame)
-  std::vector<double> recall_depth_m{2.5, 5.0, 7.5};      ///< where the detection probability is given
-  std::vector<double> recall{0.99, 0.99, 0.97};           ///< detection probability there, interpolated
-  Eigen::Vector3d object_extent_m{0.5, 0.2, 0.5};         ///< the reported bounding box
+  msg::StereoCalibration camera;                      ///< the camera whose chain is modelled
+  double min_depth_m = 0.5;                           ///< nearer than this, nothing is detected
+  double max_depth_m = 8.0;                           ///< farther than this, nothing is detected
+  Eigen::Vector2d centroid_sigma_px{2.0, 2.0};        ///< image column and row of the centroid
+  double disparity_sigma_px = 0.15;                   ///< the cluster's mean disparity
+  double disparity_bias_px = 0.0;                     ///< added to it (> 0: detections too near)
+  Eigen::Vector3d object_sigma_m{0.0, 0.0, 0.0};      ///< centroid against object centre (camera frame)
+  std::vector<double> recall_depth_m{2.5, 5.0, 7.5};  ///< where the detection probability is given
+  std::vector<double> recall{0.99, 0.99, 0.97};       ///< detection probability there, interpolated
+  Eigen::Vector3d object_extent_m{0.5, 0.2, 0.5};     ///< the reported bounding box
 };
 
 /// Throws kestrel::Error when the parameters cannot describe a camera or a probability.

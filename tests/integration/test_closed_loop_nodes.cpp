@@ -133,13 +133,10 @@ TEST(ClosedLoop, ABlackoutMakesTheHunterHoldThenReacquire) {
 // random engagements of the capture benchmark (here a line that brakes at its ends, in wind).
 TEST(ClosedLoop, TheDetectionLevelLoopIsReproducibleBitForBit) {
   const std::string graph = KESTREL_SOURCE_DIR "/graphs/sim_intercept_fast.yaml";
-  const std::vector<std::string> line = {"intruder.shape=line",
-                                         "intruder.line_start_m=[6.0, -2.0, 2.5]",
-                                         "intruder.line_end_m=[6.5, 2.0, 2.8]",
-                                         "intruder.speed_mps=2.5",
-                                         "intruder.line_acceleration_mps2=3.0",
-                                         "hunter.wind_m_s=[1.0, -2.0, 0.0]",
-                                         "hunter.gust_std_m_s=0.4"};
+  const std::vector<std::string> line = {
+      "intruder.shape=line",    "intruder.line_start_m=[6.0, -2.0, 2.5]", "intruder.line_end_m=[6.5, 2.0, 2.8]",
+      "intruder.speed_mps=2.5", "intruder.line_acceleration_mps2=3.0",    "hunter.wind_m_s=[1.0, -2.0, 0.0]",
+      "hunter.gust_std_m_s=0.4"};
   const RunResult a = run(graph, line, 7), b = run(graph, line, 7);
   ASSERT_EQ(a.outcome, RunOutcome::completed) << (a.errors.empty() ? "" : a.errors.front());
   for (const char* section : {"hunter", "controller", "aim", "control", "camera", "detection", "tracking"})

@@ -113,7 +113,7 @@ TEST(FireTrigger, WithoutADwellItFiresTheMomentTheMissIsWithinTheRadius) {
   FireTrigger fire(0.5, 0.0, 3.0);
   EXPECT_FALSE(fire.update(0.0, 0.51));
   EXPECT_TRUE(fire.update(0.033, 0.49));
-  EXPECT_FALSE(fire.update(0.066, 0.1));  // cooldown
+  EXPECT_FALSE(fire.update(0.066, 0.1));                                     // cooldown
   EXPECT_FALSE(fire.update(5.0, std::numeric_limits<double>::quiet_NaN()));  // a NaN miss never fires
 }
 
@@ -127,8 +127,8 @@ TEST(PredictedMiss, IsTheLeastDistanceToTheNetWhileItIsOpen) {
   const Eigen::Vector3d open(2.0, 0.0, -1.0);
   EXPECT_NEAR(predicted_miss(net, launcher, Eigen::Vector3d::Zero(), {open, zero, zero}), 0.0, 1e-9);
   // A target hovering 0.3 m to the side of it: the net passes it at 0.3 m.
-  EXPECT_NEAR(predicted_miss(net, launcher, Eigen::Vector3d::Zero(), {open + Eigen::Vector3d(0, 0.3, 0), zero, zero}), 0.3,
-              1e-9);
+  EXPECT_NEAR(predicted_miss(net, launcher, Eigen::Vector3d::Zero(), {open + Eigen::Vector3d(0, 0.3, 0), zero, zero}),
+              0.3, 1e-9);
   // A target crossing at 2 m/s that reaches the opening point at the opening: a hit, though it
   // is 0.8 m to the side when the shot leaves.
   const TargetMotion crossing{open - Eigen::Vector3d(0.0, 0.8, 0.0), Eigen::Vector3d(0.0, 2.0, 0.0), zero};
@@ -136,7 +136,8 @@ TEST(PredictedMiss, IsTheLeastDistanceToTheNetWhileItIsOpen) {
   // The net flies on after opening: a target where the net will be 0.15 s later is met there;
   // one where it would be after it closed is not.
   const net::NetShot shot = net.fire(0.0, launcher, Eigen::Vector3d::Zero());
-  EXPECT_NEAR(predicted_miss(net, launcher, Eigen::Vector3d::Zero(), {net.position(shot, 0.55), zero, zero}), 0.0, 1e-9);
+  EXPECT_NEAR(predicted_miss(net, launcher, Eigen::Vector3d::Zero(), {net.position(shot, 0.55), zero, zero}), 0.0,
+              1e-9);
   EXPECT_GT(predicted_miss(net, launcher, Eigen::Vector3d::Zero(), {net.position(shot, 0.9), zero, zero}), 0.6);
   // The launcher's own velocity carries the net: flying at 1 m/s sideways, the net meets a target
   // that drifts with it, and passes a hovering one 0.4 m to its side.

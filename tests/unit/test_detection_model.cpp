@@ -113,7 +113,7 @@ TEST(DetectionModel, LateralErrorIsThePixelErrorScaledByDepthPlusTheObjectsOwn) 
   const double z = 5.0;
   const Spread s = spread(model, {0.0, 0.0, z}, 40000);
   const double x_expected = std::hypot(3.0 * z / 300.0, 0.04);  // 0.0640 m
-  const double y_expected = 1.5 * z / 300.0;                     // 0.025 m
+  const double y_expected = 1.5 * z / 300.0;                    // 0.025 m
   EXPECT_NEAR(s.sd.x(), x_expected, 0.03 * x_expected);
   EXPECT_NEAR(s.sd.y(), y_expected, 0.03 * y_expected);
   EXPECT_NEAR(s.mean.x(), 0.0, 0.002);
