@@ -1,13 +1,10 @@
 #include "detection_report.hpp"
 
+#include <kestrel/evaluation/body_axes.hpp>
+
 namespace kestrel::evaluation {
 
 namespace {
-
-nlohmann::json axes_or_null(const std::optional<Eigen::Vector3d>& v) {
-  if (!v) return {{"x", nullptr}, {"y", nullptr}, {"z", nullptr}};
-  return {{"x", v->x()}, {"y", v->y()}, {"z", v->z()}};
-}
 
 std::optional<double> axis(const std::optional<Eigen::Vector3d>& v, int i) {
   return v ? std::optional<double>((*v)[i]) : std::nullopt;
@@ -16,6 +13,10 @@ std::optional<double> axis(const std::optional<Eigen::Vector3d>& v, int i) {
 }  // namespace
 
 ReportSection detection_report(const DetectionSummary& s) {
+  const std::optional<Eigen::Vector3d> rmse_body =
+      s.rmse ? std::optional<Eigen::Vector3d>(rms_in_body_axes(*s.rmse)) : std::nullopt;
+  const std::optional<Eigen::Vector3d> bias_body =
+      s.mean_error ? std::optional<Eigen::Vector3d>(bias_in_body_axes(*s.mean_error)) : std::nullopt;
   ReportSection section;
   section.values = {{"frames", s.frames},
                     {"precision", number_or_null(s.precision)},
@@ -25,6 +26,8 @@ ReportSection detection_report(const DetectionSummary& s) {
                     {"fn", s.fn},
                     {"rmse_m", axes_or_null(s.rmse)},
                     {"mean_error_m", axes_or_null(s.mean_error)},
+                    {"rmse_body_m", axes_or_null(rmse_body)},
+                    {"bias_body_m", axes_or_null(bias_body)},
                     {"lag_s", number_or_null(s.lag_s)}};
   section.metrics = {{"frames", {"", std::nullopt, false}},
                      {"precision", {"", true, false}},
@@ -34,6 +37,8 @@ ReportSection detection_report(const DetectionSummary& s) {
                      {"fn", {"", false, false}},
                      {"rmse_m", {"m", false, false}},
                      {"mean_error_m", {"m", false, true}},
+                     {"rmse_body_m", {"m", false, false}},
+                     {"bias_body_m", {"m", false, true}},
                      {"lag_s", {"s", false, true}}};
   const auto f3 = [](const std::optional<double>& v) { return text_or_undefined(v, "{:.3f}"); };
   const auto bias = [](const std::optional<double>& v) { return text_or_undefined(v, "{:+.3f} m"); };
@@ -41,10 +46,13 @@ ReportSection detection_report(const DetectionSummary& s) {
       "| frames | precision | recall | TP | FP | FN | RMSE x [m] | RMSE y [m] | RMSE z [m] | lag [s] |\n"
       "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n"
       "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n\n"
-      "Mean error (bias) of matched detections: x {}, y {}, z {}.\n",
+      "Mean error (bias) of matched detections: x {}, y {}, z {}.\n\n"
+      "In the hunter's body axes (FLU: x forward = depth, y left, z up; the paper's Table 1): RMSE x {}, y {}, "
+      "z {} m; bias x {}, y {}, z {}.\n",
       s.frames, f3(s.precision), f3(s.recall), s.tp, s.fp, s.fn, f3(axis(s.rmse, 0)), f3(axis(s.rmse, 1)),
       f3(axis(s.rmse, 2)), f3(s.lag_s), bias(axis(s.mean_error, 0)), bias(axis(s.mean_error, 1)),
-      bias(axis(s.mean_error, 2)));
+      bias(axis(s.mean_error, 2)), f3(axis(rmse_body, 0)), f3(axis(rmse_body, 1)), f3(axis(rmse_body, 2)),
+      bias(axis(bias_body, 0)), bias(axis(bias_body, 1)), bias(axis(bias_body, 2)));
   if (!s.precision || !s.recall || !s.rmse || !s.lag_s)
     section.markdown +=
         "\nUndefined: a figure with nothing to measure it on (no detections, nothing to find, no matches, or "

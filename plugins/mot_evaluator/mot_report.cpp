@@ -1,6 +1,7 @@
 #include "mot_report.hpp"
 
 #include <kestrel/algorithms/mot_metrics.hpp>
+#include <kestrel/evaluation/body_axes.hpp>
 
 namespace kestrel::evaluation {
 
@@ -29,20 +30,25 @@ ReportSection tracking_report(const TrackingSummary& t) {
   section.values["mota"] = number_or_null(mota);
   section.values["motp_m"] = number_or_null(motp);
   section.values["idf1"] = number_or_null(idf1);
-  section.values.update({{"rmse_m", number_or_null(rmse)},
-                         {"rmse_axes_m",
-                          {{"x", number_or_null(defined_if(selected, t.rmse_axes.x()))},
-                           {"y", number_or_null(defined_if(selected, t.rmse_axes.y()))},
-                           {"z", number_or_null(defined_if(selected, t.rmse_axes.z()))}}},
-                         {"selected_frames", t.selected_frames},
-                         {"lag_s", number_or_null(t.lag_s)},
-                         {"target",
-                          {{"mota", number_or_null(target_mota)},
-                           {"frames", t.target.frames},
-                           {"on_target", t.target.on},
-                           {"off_target", t.target.off},
-                           {"missing", t.target.missing},
-                           {"switches", t.target.switches}}}});
+  section.values.update(
+      {{"rmse_m", number_or_null(rmse)},
+       {"rmse_axes_m",
+        {{"x", number_or_null(defined_if(selected, t.rmse_axes.x()))},
+         {"y", number_or_null(defined_if(selected, t.rmse_axes.y()))},
+         {"z", number_or_null(defined_if(selected, t.rmse_axes.z()))}}},
+       {"rmse_body_m",
+        axes_or_null(selected ? std::optional<Eigen::Vector3d>(rms_in_body_axes(t.rmse_axes)) : std::nullopt)},
+       {"bias_body_m",
+        axes_or_null(selected ? std::optional<Eigen::Vector3d>(bias_in_body_axes(t.bias_axes)) : std::nullopt)},
+       {"selected_frames", t.selected_frames},
+       {"lag_s", number_or_null(t.lag_s)},
+       {"target",
+        {{"mota", number_or_null(target_mota)},
+         {"frames", t.target.frames},
+         {"on_target", t.target.on},
+         {"off_target", t.target.off},
+         {"missing", t.target.missing},
+         {"switches", t.target.switches}}}});
   const nlohmann::json clear_mot_meta = algorithms::mot_summary_meta("");
   for (auto it = clear_mot_meta.begin(); it != clear_mot_meta.end(); ++it) {
     kestrel::MetricMeta meta;
@@ -54,6 +60,8 @@ ReportSection tracking_report(const TrackingSummary& t) {
   }
   section.metrics.insert({{"rmse_m", {"m", false, false}},
                           {"rmse_axes_m", {"m", false, false}},
+                          {"rmse_body_m", {"m", false, false}},
+                          {"bias_body_m", {"m", false, true}},
                           {"selected_frames", {"", true, false}},
                           {"lag_s", {"s", false, true}},
                           {"target.mota", {"", true, false}},
@@ -74,6 +82,13 @@ ReportSection tracking_report(const TrackingSummary& t) {
       s.frames, f(mota, "{:.4f}"), f(motp, "{:.3f}"), f(idf1, "{:.3f}"), s.idsw, s.fp, s.fn, s.fragmentations,
       s.mostly_tracked, s.partially_tracked, s.mostly_lost, f(rmse, "{:.3f}"), f(t.lag_s, "{:.3f}"),
       f(target_mota, "{:.4f}"), t.target.on, t.target.frames, t.target.off, t.target.missing, t.target.switches);
+  if (selected) {
+    const Eigen::Vector3d body = rms_in_body_axes(t.rmse_axes), bias = bias_in_body_axes(t.bias_axes);
+    section.markdown += fmt::format(
+        "\nThe selected track's error in the hunter's body axes (FLU: x forward = depth, y left, z up; the paper's "
+        "axes): RMSE x {:.3f}, y {:.3f}, z {:.3f} m; bias x {:+.3f}, y {:+.3f}, z {:+.3f} m.\n",
+        body.x(), body.y(), body.z(), bias.x(), bias.y(), bias.z());
+  }
   if (!mota || !motp || !idf1 || !rmse || !t.lag_s || !target_mota)
     section.markdown +=
         "\nUndefined: a figure with nothing to measure it on (no ground truth, no matches, no frame with the target "

@@ -77,6 +77,7 @@ bool TrackingScorer::add_frame(const msg::Tracks& tracks, const msg::GroundTruth
     const msg::GroundTruthObject& object = *visible[static_cast<std::size_t>(i)];
     const Eigen::Vector3d e = selected->position() - object.position_camera;
     selected_sq_ += e.cwiseProduct(e);
+    selected_sum_ += e;
     ++selected_samples_;
     if (object.id == truth.objects.front().id) selected_curve_.push_back({arrival_s, selected->position()});
   }
@@ -117,6 +118,7 @@ TrackingSummary TrackingScorer::summary(double max_lag_s, double lag_step_s) con
   if (selected_samples_ > 0) {
     const double n = static_cast<double>(selected_samples_);
     s.rmse_axes = (selected_sq_ / n).cwiseSqrt();
+    s.bias_axes = selected_sum_ / n;
     s.rmse = std::sqrt(selected_sq_.sum() / n);
   }
   s.lag_s = algorithms::estimate_lag(truth_curve_, selected_curve_, max_lag_s, lag_step_s);

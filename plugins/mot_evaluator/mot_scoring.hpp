@@ -28,6 +28,7 @@ struct TargetScore {
 struct TrackingSummary {
   algorithms::MotSummary mot;
   Eigen::Vector3d rmse_axes = Eigen::Vector3d::Zero();  ///< selected track, per axis
+  Eigen::Vector3d bias_axes = Eigen::Vector3d::Zero();  ///< selected track, mean error per axis
   double rmse = 0.0;                                    ///< selected track, 3D
   std::uint64_t selected_frames = 0;                    ///< frames the selected track matched an object
   std::optional<double> lag_s;
@@ -55,6 +56,7 @@ class TrackingScorer {
   double skip_;
   algorithms::ClearMotAccumulator mot_;
   Eigen::Vector3d selected_sq_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d selected_sum_ = Eigen::Vector3d::Zero();
   std::uint64_t selected_samples_ = 0;
   std::vector<algorithms::TimedPoint> truth_curve_, selected_curve_;
   TargetScore target_;

@@ -58,3 +58,30 @@ TEST(TrackingReport, EveryValueHasAUnitAndADirection) {
   EXPECT_TRUE(r.metrics.at("lag_s").by_magnitude);
   EXPECT_FALSE(r.metrics.at("num_objects").higher_is_better);
 }
+
+// The selected track 0.2 m right of, 0.05 m below and 0.1 m nearer than the intruder (camera
+// frame), every frame: in the body axes of the paper's Table 1 that is 0.1 m short (x = -0.1),
+// 0.2 m right (y = -0.2) and 0.05 m low (z = -0.05).
+TEST(TrackingReport, BodyFrameFiguresAreTheCameraFiguresOnThePapersAxes) {
+  TrackingScorer scorer(1.0);
+  for (int i = 0; i < 5; ++i) {
+    msg::Tracks tracks;
+    tracks.stamp = from_seconds(i / 30.0);
+    msg::Track t;
+    t.id = 7;
+    t.state = Eigen::VectorXd::Zero(9);
+    t.state.head<3>() = Eigen::Vector3d(0.2, 0.05, 4.9);
+    tracks.items.push_back(t);
+    tracks.selected_id = 7;
+    scorer.add_frame(tracks, truth_at(i / 30.0, {0, 0, 5}), i / 30.0);
+  }
+  const ReportSection r = tracking_report(scorer.summary());
+  EXPECT_NEAR(r.values.at("rmse_body_m").at("x").get<double>(), 0.1, 1e-9);
+  EXPECT_NEAR(r.values.at("rmse_body_m").at("y").get<double>(), 0.2, 1e-9);
+  EXPECT_NEAR(r.values.at("rmse_body_m").at("z").get<double>(), 0.05, 1e-9);
+  EXPECT_NEAR(r.values.at("bias_body_m").at("x").get<double>(), -0.1, 1e-9);
+  EXPECT_NEAR(r.values.at("bias_body_m").at("y").get<double>(), -0.2, 1e-9);
+  EXPECT_NEAR(r.values.at("bias_body_m").at("z").get<double>(), -0.05, 1e-9);
+  EXPECT_THAT(r.markdown, HasSubstr("RMSE x 0.100, y 0.200, z 0.050 m; bias x -0.100, y -0.200, z -0.050 m"));
+  EXPECT_THAT(undescribed_metrics(r), IsEmpty());
+}
