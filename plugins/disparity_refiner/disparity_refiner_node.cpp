@@ -1,0 +1,195 @@
+// The `disparity_refiner` node: places each detection from its object's disparity measured as a
+// whole, at full resolution and to a fraction of a pixel (object_disparity.hpp), at the image
+// centroid of its pixels. Between the clusterer and whatever consumes its detections; it needs
+// the stereo pair and the full-resolution cloud of the same capture.
+#include <deque>
+#include <kestrel/messages/detections.hpp>
+#include <kestrel/messages/point_cloud.hpp>
+#include <kestrel/messages/stereo_frame.hpp>
+#include <kestrel/plugin.hpp>
+#include <opencv2/imgproc.hpp>
+#include <type_traits>
+
+#include "object_disparity.hpp"
+
+namespace kestrel::refine {
+
+struct RefinerConfig {
+  enum class Method { none, mean, match };
+  Method refine = Method::match;
+  double margin_m = 0.05;
+  std::int64_t erode_px = 1;
+  std::int64_t min_pixels = 20;
+  double search_px = 2.0;
+  std::int64_t iterations = 10;
+  std::int64_t history = 8;
+};
+
+class DisparityRefiner final : public Node {
+ public:
+  static constexpr Input<msg::Detections> kDetections{"detections"};
+  static constexpr Input<msg::StereoFrame> kFrame{"frame"};
+  static constexpr Input<msg::PointCloud> kCloud{"cloud"};
+  static constexpr Output<msg::Detections> kOut{"detections"};
+
+  static NodeSpec spec() {
+    using C = RefinerConfig;
+    ConfigSpec<C> c;
+    c.choice("refine", &C::refine, {{"none", C::Method::none}, {"mean", C::Method::mean}, {"match", C::Method::match}})
+        .describe(
+            "none: the clusterer's centroid (for ablation); mean: the robust mean of the object's SGBM disparities; "
+            "match: the object's pixels matched as a whole against the right image, to a fraction of a pixel");
+    c.param("margin_m", &C::margin_m)
+        .with_unit("m")
+        .range(0.0, 10.0)
+        .describe("the object's pixels: full-resolution points within the detection's box grown by this");
+    c.param("erode_px", &C::erode_px)
+        .range(0, 20)
+        .with_unit("px")
+        .describe("pixels peeled off the object's silhouette (they bleed onto the background)");
+    c.param("min_pixels", &C::min_pixels).range(1, 1000000).describe("fewer object pixels: left as it is");
+    c.param("search_px", &C::search_px)
+        .with_unit("px")
+        .range(0.5, 64.0)
+        .describe("match: whole-pixel search around the SGBM disparity, each way");
+    c.param("iterations", &C::iterations).range(0, 100).describe("match: Gauss-Newton steps after the search");
+    c.param("history", &C::history)
+        .range(1, 1000)
+        .describe("frames and clouds kept to find the capture of a late detection");
+    return NodeSpec("disparity_refiner", "Places detections from their object's sub-pixel disparity")
+        .details(
+            "For each detection, the full-resolution cloud's points inside its box (grown by margin_m) are "
+            "projected back into the left image: the object's pixels, holes closed and the silhouette eroded by "
+            "erode_px. Its disparity is measured as a whole (refine: match, or mean), and the detection is placed "
+            "at that disparity under the pixels' image centroid: averaging in disparity, not depth. A detection "
+            "without enough pixels, texture or a match, or whose capture is no longer held, passes unchanged and is "
+            "counted.")
+        .input(kDetections, "the clusterer's detections")
+        .input(kFrame, "the stereo pairs they are found in (kept by capture time)")
+        .input(kCloud, "the full-resolution clouds of those pairs (stereo_depth, before the voxel grid)")
+        .output(kOut, "the same detections, placed from their refined disparity")
+        .config(std::move(c));
+  }
+
+  explicit DisparityRefiner(NodeInit& init) : cfg_(init.config<RefinerConfig>()) {}
+
+  void process(Context& ctx) override {
+    if (ctx.triggered_by(kFrame)) return keep(ctx.get(kFrame));
+    if (ctx.triggered_by(kCloud)) return keep(ctx.get(kCloud));
+    const auto in = ctx.get(kDetections);
+    msg::Detections out = *in;
+    if (cfg_.refine != RefinerConfig::Method::none) {
+      const Capture* capture = find(in->stamp);
+      for (auto& d : out.items) {
+        ++detections_;
+        if (!capture) {
+          ++no_capture_;
+          continue;
+        }
+        if (const auto p = refine(*capture, d)) {
+          d.position = *p;
+          ++refined_;
+        }
+      }
+    }
+    ctx.publish(kOut, std::move(out));
+  }
+
+  void finish(Context& ctx) override {
+    const std::string id = ctx.id();
+    const double shift = refined_ ? shift_sum_ / static_cast<double>(refined_) : 0.0;
+    ctx.set_report_section(id,
+                           {{"detections", detections_},
+                            {"refined", refined_},
+                            {"no_capture", no_capture_},
+                            {"no_pixels", no_pixels_},
+                            {"no_match", no_match_},
+                            {"mean_abs_shift_px", refined_ ? nlohmann::json(shift) : nlohmann::json()}},
+                           fmt::format("{} of {} detections placed from their object's disparity; left as they were: "
+                                       "{} without their capture, {} with too few pixels, {} without a match. Mean "
+                                       "|refined - SGBM median| disparity {:.3f} px.\n",
+                                       refined_, detections_, no_capture_, no_pixels_, no_match_, shift));
+    for (const char* k : {"detections", "refined", "no_capture", "no_pixels", "no_match"})
+      ctx.describe_quantity(id + "." + k);
+    ctx.describe_quantity(id + ".mean_abs_shift_px", "px");
+  }
+
+ private:
+  struct Capture {
+    Time stamp;
+    msg::StereoCalibration calibration;
+    cv::Mat left, right;  // CV_32F grey, converted once per frame
+    std::vector<Eigen::Vector3f> cloud;
+    bool has_cloud = false;
+  };
+
+  // Frames and clouds by capture time: the detections of a capture arrive after its frame and
+  // cloud, and perhaps after the next frame's (realtime executor).
+  template <class M>
+  void keep(const std::shared_ptr<const M>& message) {
+    Capture* c = slot(message->stamp);
+    if constexpr (std::is_same_v<M, msg::StereoFrame>) {
+      c->calibration = message->calibration;
+      c->left = grey(message->left);
+      c->right = grey(message->right);
+    } else {
+      if (!message->points) throw Error("point cloud message without points");
+      c->cloud.clear();
+      c->cloud.reserve(message->points->size());
+      for (const auto& p : *message->points) c->cloud.emplace_back(p.x, p.y, p.z);
+      c->has_cloud = true;
+    }
+  }
+
+  Capture* slot(Time stamp) {
+    for (auto& c : captures_)
+      if (c.stamp == stamp) return &c;
+    captures_.push_back(Capture{});
+    captures_.back().stamp = stamp;
+    while (static_cast<std::int64_t>(captures_.size()) > cfg_.history) captures_.pop_front();
+    return &captures_.back();
+  }
+
+  const Capture* find(Time stamp) const {
+    for (const auto& c : captures_)
+      if (c.stamp == stamp && !c.left.empty() && c.has_cloud) return &c;
+    return nullptr;
+  }
+
+  static cv::Mat grey(const cv::Mat& image) {
+    cv::Mat g, f;
+    if (image.channels() == 3)
+      cv::cvtColor(image, g, cv::COLOR_BGR2GRAY);
+    else
+      g = image;
+    g.convertTo(f, CV_32F);
+    return f;
+  }
+
+  std::optional<Eigen::Vector3d> refine(const Capture& c, const msg::Detection& d) {
+    const auto mask = object_mask(c.cloud, c.calibration, d.position, 0.5 * d.extent, cfg_.margin_m,
+                                  static_cast<int>(cfg_.erode_px), static_cast<int>(cfg_.min_pixels));
+    if (!mask) {
+      ++no_pixels_;
+      return std::nullopt;
+    }
+    const std::optional<double> disparity =
+        cfg_.refine == RefinerConfig::Method::mean
+            ? robust_mean_disparity(*mask)
+            : match_disparity(c.left, c.right, *mask, {cfg_.search_px, static_cast<int>(cfg_.iterations)});
+    if (!disparity) {
+      ++no_match_;
+      return std::nullopt;
+    }
+    shift_sum_ += std::abs(*disparity - mask->sgbm_disparity);
+    return place(c.calibration, *mask, *disparity);
+  }
+
+  RefinerConfig cfg_;
+  std::deque<Capture> captures_;
+  std::uint64_t detections_ = 0, refined_ = 0, no_capture_ = 0, no_pixels_ = 0, no_match_ = 0;
+  double shift_sum_ = 0.0;
+};
+KESTREL_REGISTER_NODE(DisparityRefiner)
+
+}  // namespace kestrel::refine
