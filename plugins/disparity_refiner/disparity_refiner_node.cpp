@@ -18,7 +18,7 @@ struct RefinerConfig {
   enum class Method { none, mean, match };
   Method refine = Method::match;
   double margin_m = 0.05;
-  std::int64_t erode_px = 1;
+  std::int64_t erode_px = 0;
   std::int64_t min_pixels = 20;
   double search_px = 2.0;
   std::int64_t iterations = 10;
@@ -46,7 +46,9 @@ class DisparityRefiner final : public Node {
     c.param("erode_px", &C::erode_px)
         .range(0, 20)
         .with_unit("px")
-        .describe("pixels peeled off the object's silhouette (they bleed onto the background)");
+        .describe(
+            "pixels peeled off the object's silhouette, which bleed onto the background; 0 keeps them: against a "
+            "plain sky the silhouette's edge is the texture that places the object best");
     c.param("min_pixels", &C::min_pixels).range(1, 1000000).describe("fewer object pixels: left as it is");
     c.param("search_px", &C::search_px)
         .with_unit("px")
