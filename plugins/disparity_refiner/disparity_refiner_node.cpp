@@ -8,7 +8,6 @@
 #include <kestrel/messages/stereo_frame.hpp>
 #include <kestrel/plugin.hpp>
 #include <opencv2/imgproc.hpp>
-#include <type_traits>
 
 #include "object_disparity.hpp"
 
@@ -81,7 +80,7 @@ class DisparityRefiner final : public Node {
     const auto in = ctx.get(kDetections);
     msg::Detections out = *in;
     if (cfg_.refine != RefinerConfig::Method::none) {
-      const Capture* capture = find(in->stamp);
+      Capture* capture = find(in->stamp);
       for (auto& d : out.items) {
         ++detections_;
         if (!capture) {
@@ -117,30 +116,21 @@ class DisparityRefiner final : public Node {
   }
 
  private:
+  // One capture's frame and cloud, shared with the nodes that made them (never copied); the
+  // grey float images the match needs are made the first time a detection asks for them.
   struct Capture {
     Time stamp;
-    msg::StereoCalibration calibration;
-    cv::Mat left, right;  // CV_32F grey, converted once per frame
-    std::vector<Eigen::Vector3f> cloud;
-    bool has_cloud = false;
+    std::shared_ptr<const msg::StereoFrame> frame;
+    std::shared_ptr<const msg::PointCloud> cloud;
+    cv::Mat left, right;
   };
 
   // Frames and clouds by capture time: the detections of a capture arrive after its frame and
   // cloud, and perhaps after the next frame's (realtime executor).
-  template <class M>
-  void keep(const std::shared_ptr<const M>& message) {
-    Capture* c = slot(message->stamp);
-    if constexpr (std::is_same_v<M, msg::StereoFrame>) {
-      c->calibration = message->calibration;
-      c->left = grey(message->left);
-      c->right = grey(message->right);
-    } else {
-      if (!message->points) throw Error("point cloud message without points");
-      c->cloud.clear();
-      c->cloud.reserve(message->points->size());
-      for (const auto& p : *message->points) c->cloud.emplace_back(p.x, p.y, p.z);
-      c->has_cloud = true;
-    }
+  void keep(std::shared_ptr<const msg::StereoFrame> frame) { slot(frame->stamp)->frame = std::move(frame); }
+  void keep(std::shared_ptr<const msg::PointCloud> cloud) {
+    if (!cloud->points) throw Error("point cloud message without points");
+    slot(cloud->stamp)->cloud = std::move(cloud);
   }
 
   Capture* slot(Time stamp) {
@@ -152,9 +142,9 @@ class DisparityRefiner final : public Node {
     return &captures_.back();
   }
 
-  const Capture* find(Time stamp) const {
-    for (const auto& c : captures_)
-      if (c.stamp == stamp && !c.left.empty() && c.has_cloud) return &c;
+  Capture* find(Time stamp) {
+    for (auto& c : captures_)
+      if (c.stamp == stamp && c.frame && c.cloud) return &c;
     return nullptr;
   }
 
@@ -168,12 +158,17 @@ class DisparityRefiner final : public Node {
     return f;
   }
 
-  std::optional<Eigen::Vector3d> refine(const Capture& c, const msg::Detection& d) {
-    const auto mask = object_mask(c.cloud, c.calibration, d.position, 0.5 * d.extent, cfg_.margin_m,
+  std::optional<Eigen::Vector3d> refine(Capture& c, const msg::Detection& d) {
+    const msg::StereoCalibration& calibration = c.frame->calibration;
+    const auto mask = object_mask(*c.cloud->points, calibration, d.position, 0.5 * d.extent, cfg_.margin_m,
                                   static_cast<int>(cfg_.erode_px), static_cast<int>(cfg_.min_pixels));
     if (!mask) {
       ++no_pixels_;
       return std::nullopt;
+    }
+    if (cfg_.refine == RefinerConfig::Method::match && c.left.empty()) {
+      c.left = grey(c.frame->left);
+      c.right = grey(c.frame->right);
     }
     const std::optional<double> disparity =
         cfg_.refine == RefinerConfig::Method::mean
@@ -184,7 +179,7 @@ class DisparityRefiner final : public Node {
       return std::nullopt;
     }
     shift_sum_ += std::abs(*disparity - mask->sgbm_disparity);
-    return place(c.calibration, *mask, *disparity);
+    return place(calibration, *mask, *disparity);
   }
 
   RefinerConfig cfg_;

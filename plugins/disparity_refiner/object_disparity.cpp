@@ -29,7 +29,7 @@ struct Pixel {
 
 }  // namespace
 
-std::optional<ObjectMask> object_mask(const std::vector<Eigen::Vector3f>& cloud, const msg::StereoCalibration& c,
+std::optional<ObjectMask> object_mask(const pcl::PointCloud<pcl::PointXYZ>& cloud, const msg::StereoCalibration& c,
                                       const Eigen::Vector3d& centre, const Eigen::Vector3d& half_extent,
                                       double margin_m, int erode_px, int min_pixels) {
   const Eigen::Vector3d reach = half_extent.array() + margin_m;
@@ -39,7 +39,8 @@ std::optional<ObjectMask> object_mask(const std::vector<Eigen::Vector3f>& cloud,
   };
   std::vector<Hit> hits;
   int u_min = c.width, v_min = c.height, u_max = -1, v_max = -1;
-  for (const auto& p : cloud) {
+  for (const auto& point : cloud) {
+    const Eigen::Vector3f p = point.getVector3fMap();
     if (!(p.z() > 0.0f) || ((p.cast<double>() - centre).cwiseAbs().array() > reach.array()).any()) continue;
     const int u = static_cast<int>(std::lround(c.fx * p.x() / p.z() + c.cx));
     const int v = static_cast<int>(std::lround(c.fy * p.y() / p.z() + c.cy));

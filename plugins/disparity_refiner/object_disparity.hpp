@@ -8,10 +8,12 @@
 // The object's pixels come from the cluster: the full-resolution cloud's points inside the
 // detection's box, projected back into the left image (each is one pixel), then eroded so that
 // the pixels that bleed from the silhouette onto the background do not vote.
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
 #include <Eigen/Core>
 #include <opencv2/core/mat.hpp>
 #include <optional>
-#include <vector>
 
 #include "kestrel/messages/stereo_frame.hpp"
 
@@ -29,7 +31,7 @@ struct ObjectMask {
 /// The pixels of the points of `cloud` (camera frame, one per pixel, as stereo_depth makes them)
 /// that lie in the box centre ± half_extent + margin, small holes closed, then eroded by
 /// `erode_px`. None when fewer than `min_pixels` remain.
-std::optional<ObjectMask> object_mask(const std::vector<Eigen::Vector3f>& cloud, const msg::StereoCalibration& c,
+std::optional<ObjectMask> object_mask(const pcl::PointCloud<pcl::PointXYZ>& cloud, const msg::StereoCalibration& c,
                                       const Eigen::Vector3d& centre, const Eigen::Vector3d& half_extent,
                                       double margin_m, int erode_px, int min_pixels);
 

@@ -55,13 +55,13 @@ std::pair<cv::Mat, cv::Mat> shifted_pair(double d, std::uint64_t seed) {
 }
 
 // The points stereo_depth would give for the pixels of a rectangle with disparity `sgbm`.
-std::vector<Eigen::Vector3f> points(const msg::StereoCalibration& c, cv::Rect r, double sgbm) {
-  std::vector<Eigen::Vector3f> cloud;
+pcl::PointCloud<pcl::PointXYZ> points(const msg::StereoCalibration& c, cv::Rect r, double sgbm) {
+  pcl::PointCloud<pcl::PointXYZ> cloud;
   const double z = c.fx * c.baseline_m / sgbm;
   for (int v = r.y; v < r.y + r.height; ++v)
     for (int u = r.x; u < r.x + r.width; ++u)
-      cloud.emplace_back(static_cast<float>((u - c.cx) * z / c.fx), static_cast<float>((v - c.cy) * z / c.fy),
-                         static_cast<float>(z));
+      cloud.push_back(pcl::PointXYZ(static_cast<float>((u - c.cx) * z / c.fx),
+                                    static_cast<float>((v - c.cy) * z / c.fy), static_cast<float>(z)));
   return cloud;
 }
 
@@ -124,7 +124,7 @@ TEST(ObjectDisparity, TheRobustMeanIgnoresPixelsThatBledOntoTheBackground) {
   const cv::Rect r(300, 200, 20, 20);
   auto cloud = points(c, r, 8.0);
   // A tenth of the pixels carry the background's disparity (1 px): far behind.
-  for (std::size_t i = 0; i < cloud.size(); i += 10) cloud[i] *= 8.0f;
+  for (std::size_t i = 0; i < cloud.size(); i += 10) cloud[i].getVector3fMap() *= 8.0f;
   const auto mask = object_mask(cloud, c, {0, -0.4, 4.5}, {10, 10, 10}, 0.0, 0, 20);
   ASSERT_TRUE(mask.has_value());
   const auto d = robust_mean_disparity(*mask);
