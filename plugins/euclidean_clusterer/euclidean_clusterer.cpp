@@ -1,5 +1,5 @@
-// The `euclidean_clusterer` node: PCL Euclidean cluster extraction; the centroid of every
-// cluster with 20 to 200 points is a detection (paper, section 2.2).
+// The `euclidean_clusterer` node: Euclidean cluster extraction as PCL does it; the centroid of
+// every cluster with 20 to 200 points is a detection (paper, section 2.2).
 #include <kestrel/messages/detections.hpp>
 #include <kestrel/messages/point_cloud.hpp>
 #include <kestrel/plot/line_plot.hpp>
@@ -21,6 +21,11 @@ class EuclideanClusterer final : public Node {
 
   static NodeSpec spec() {
     ConfigSpec<Config> c;
+    c.choice("method", &Config::clusters, &ClusterOptions::method,
+             {{"grid", ClusterOptions::Method::grid}, {"pcl", ClusterOptions::Method::pcl}})
+        .describe(
+            "grid: a hash grid, the same clusters as PCL's in a fraction of the time; pcl: PCL's "
+            "EuclideanClusterExtraction on a kd-tree");
     c.param("tolerance_m", &Config::clusters, &ClusterOptions::tolerance_m)
         .range(0.001, 100.0)
         .with_unit("m")
@@ -36,7 +41,8 @@ class EuclideanClusterer final : public Node {
         .describe("cloud index drawn as clusters.png with --report; -1 = none");
     c.rule("min_points <= max_points", {"min_points", "max_points"},
            [](const Config& k) { return k.clusters.min_points <= k.clusters.max_points; });
-    return NodeSpec("euclidean_clusterer", "Euclidean clusters (PCL); each cluster's centroid is a detection")
+    return NodeSpec("euclidean_clusterer",
+                    "Euclidean clusters (as PCL finds them); each cluster's centroid is a detection")
         .details(
             "Points closer than tolerance_m join one cluster. Clusters with fewer than min_points or more than "
             "max_points points are dropped: they are unlikely to be a drone (paper: 0.5 m, 20, 200). With "

@@ -61,19 +61,16 @@ class ConfigSpec {
   /// A string parameter with fixed choices, each mapped to a value of the enum field.
   template <class E>
   ParamSpec& choice(std::string name, E Config::*field, std::vector<std::pair<std::string, E>> options) {
-    static_assert(std::is_enum_v<E>, "choice() binds an enum field");
-    ParamSpec& spec = push(std::move(name), ParamType::string);
-    const E initial = Config{}.*field;
-    for (const auto& [text, value] : options) {
-      spec.allowed.push_back(text);
-      if (value == initial) spec.default_value = ParamValue(text);
-    }
-    spec.bind = [field, options](void* config, const ParamValue& v) {
-      const auto& text = std::get<std::string>(v);
-      for (const auto& [t, value] : options)
-        if (t == text) static_cast<Config*>(config)->*field = value;
-    };
-    return spec;
+    return bind_choice<E>(
+        std::move(name), [field](Config& c) -> E& { return c.*field; }, std::move(options));
+  }
+
+  /// The same, bound to an enum field of a nested struct.
+  template <class Group, class E>
+  ParamSpec& choice(std::string name, Group Config::*group, E Group::*field,
+                    std::vector<std::pair<std::string, E>> options) {
+    return bind_choice<E>(
+        std::move(name), [group, field](Config& c) -> E& { return (c.*group).*field; }, std::move(options));
   }
 
   /// A component parameter (e.g. the associator of a tracker), bound to a ComponentConfig field
@@ -106,6 +103,24 @@ class ConfigSpec {
   }
 
  private:
+  template <class E, class Access>
+  ParamSpec& bind_choice(std::string name, Access access, std::vector<std::pair<std::string, E>> options) {
+    static_assert(std::is_enum_v<E>, "choice() binds an enum field");
+    ParamSpec& spec = push(std::move(name), ParamType::string);
+    Config defaults{};
+    const E initial = access(defaults);
+    for (const auto& [text, value] : options) {
+      spec.allowed.push_back(text);
+      if (value == initial) spec.default_value = ParamValue(text);
+    }
+    spec.bind = [access, options](void* config, const ParamValue& v) {
+      const auto& text = std::get<std::string>(v);
+      for (const auto& [t, value] : options)
+        if (t == text) access(*static_cast<Config*>(config)) = value;
+    };
+    return spec;
+  }
+
   template <class T, class Access>
   ParamSpec& bind(std::string name, Access access, bool with_default) {
     using Codec = ParamCodec<T>;
