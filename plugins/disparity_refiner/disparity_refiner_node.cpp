@@ -1,7 +1,8 @@
 // The `disparity_refiner` node: places each detection from its object's disparity measured as a
 // whole, at full resolution and to a fraction of a pixel (object_disparity.hpp), at the image
 // centroid of its pixels. Between the clusterer and whatever consumes its detections; it needs
-// the stereo pair and the full-resolution cloud of the same capture.
+// the stereo pair and stereo_depth's cloud of the same capture (at full or reduced resolution:
+// matched at half resolution, the objects are found coarse and measured fine).
 #include <deque>
 #include <kestrel/messages/detections.hpp>
 #include <kestrel/messages/point_cloud.hpp>
@@ -59,15 +60,15 @@ class DisparityRefiner final : public Node {
         .describe("frames and clouds kept to find the capture of a late detection");
     return NodeSpec("disparity_refiner", "Places detections from their object's sub-pixel disparity")
         .details(
-            "For each detection, the full-resolution cloud's points inside its box (grown by margin_m) are "
-            "projected back into the left image: the object's pixels, holes closed and the silhouette eroded by "
+            "For each detection, the stereo cloud's points inside its box (grown by margin_m) are "
+            "projected back into the left image (each as the square of pixels it was matched from): the object's pixels, holes closed and the silhouette eroded by "
             "erode_px. Its disparity is measured as a whole (refine: match, or mean), and the detection is placed "
             "at that disparity under the pixels' image centroid: averaging in disparity, not depth. A detection "
             "without enough pixels, texture or a match, or whose capture is no longer held, passes unchanged and is "
             "counted.")
         .input(kDetections, "the clusterer's detections")
         .input(kFrame, "the stereo pairs they are found in (kept by capture time)")
-        .input(kCloud, "the full-resolution clouds of those pairs (stereo_depth, before the voxel grid)")
+        .input(kCloud, "the clouds of those pairs (stereo_depth, before the voxel grid), at any downscale")
         .output(kOut, "the same detections, placed from their refined disparity")
         .config(std::move(c));
   }
@@ -130,6 +131,9 @@ class DisparityRefiner final : public Node {
   void keep(std::shared_ptr<const msg::StereoFrame> frame) { slot(frame->stamp)->frame = std::move(frame); }
   void keep(std::shared_ptr<const msg::PointCloud> cloud) {
     if (!cloud->points) throw Error("point cloud message without points");
+    if (cloud->pixels_per_point < 1)
+      throw Error("the cloud's points are not image samples (pixels_per_point 0): connect stereo_depth's cloud, "
+                  "before the voxel grid");
     slot(cloud->stamp)->cloud = std::move(cloud);
   }
 
@@ -161,7 +165,8 @@ class DisparityRefiner final : public Node {
   std::optional<Eigen::Vector3d> refine(Capture& c, const msg::Detection& d) {
     const msg::StereoCalibration& calibration = c.frame->calibration;
     const auto mask = object_mask(*c.cloud->points, calibration, d.position, 0.5 * d.extent, cfg_.margin_m,
-                                  static_cast<int>(cfg_.erode_px), static_cast<int>(cfg_.min_pixels));
+                                  static_cast<int>(cfg_.erode_px), static_cast<int>(cfg_.min_pixels),
+                                  c.cloud->pixels_per_point);
     if (!mask) {
       ++no_pixels_;
       return std::nullopt;

@@ -31,7 +31,10 @@ struct Pixel {
 
 std::optional<ObjectMask> object_mask(const pcl::PointCloud<pcl::PointXYZ>& cloud, const msg::StereoCalibration& c,
                                       const Eigen::Vector3d& centre, const Eigen::Vector3d& half_extent,
-                                      double margin_m, int erode_px, int min_pixels) {
+                                      double margin_m, int erode_px, int min_pixels, int pixels_per_point) {
+  const int side = std::max(1, pixels_per_point);
+  // The square's first pixel: its centre lies where the point projects.
+  const double to_corner = 0.5 * (side - 1);
   const Eigen::Vector3d reach = half_extent.array() + margin_m;
   struct Hit {
     int u, v;
@@ -42,11 +45,16 @@ std::optional<ObjectMask> object_mask(const pcl::PointCloud<pcl::PointXYZ>& clou
   for (const auto& point : cloud) {
     const Eigen::Vector3f p = point.getVector3fMap();
     if (!(p.z() > 0.0f) || ((p.cast<double>() - centre).cwiseAbs().array() > reach.array()).any()) continue;
-    const int u = static_cast<int>(std::lround(c.fx * p.x() / p.z() + c.cx));
-    const int v = static_cast<int>(std::lround(c.fy * p.y() / p.z() + c.cy));
-    if (u < 0 || v < 0 || u >= c.width || v >= c.height) continue;
-    hits.push_back({u, v, static_cast<float>(c.fx * c.baseline_m / p.z())});
-    u_min = std::min(u_min, u), u_max = std::max(u_max, u), v_min = std::min(v_min, v), v_max = std::max(v_max, v);
+    const int u = static_cast<int>(std::lround(c.fx * p.x() / p.z() + c.cx - to_corner));
+    const int v = static_cast<int>(std::lround(c.fy * p.y() / p.z() + c.cy - to_corner));
+    const float d = static_cast<float>(c.fx * c.baseline_m / p.z());
+    for (int dv = 0; dv < side; ++dv)
+      for (int du = 0; du < side; ++du) {
+        if (u + du < 0 || v + dv < 0 || u + du >= c.width || v + dv >= c.height) continue;
+        hits.push_back({u + du, v + dv, d});
+        u_min = std::min(u_min, u + du), u_max = std::max(u_max, u + du);
+        v_min = std::min(v_min, v + dv), v_max = std::max(v_max, v + dv);
+      }
   }
   if (static_cast<int>(hits.size()) < min_pixels) return std::nullopt;
   ObjectMask mask;

@@ -5,9 +5,10 @@
 // (hundreds of pixels, the drone's own texture against the right image along the epipolar
 // line) its disparity comes out to a few hundredths of a pixel.
 //
-// The object's pixels come from the cluster: the full-resolution cloud's points inside the
-// detection's box, projected back into the left image (each is one pixel), then eroded so that
-// the pixels that bleed from the silhouette onto the background do not vote.
+// The object's pixels come from the cluster: the stereo cloud's points inside the
+// detection's box, projected back into the left image (each as the square of pixels it stands
+// for), then eroded so that the pixels that bleed from the silhouette onto the background do
+// not vote.
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
@@ -28,12 +29,13 @@ struct ObjectMask {
   int count = 0;              ///< pixels on the object
 };
 
-/// The pixels of the points of `cloud` (camera frame, one per pixel, as stereo_depth makes them)
-/// that lie in the box centre ± half_extent + margin, small holes closed, then eroded by
-/// `erode_px`. None when fewer than `min_pixels` remain.
+/// The pixels of the points of `cloud` (camera frame, image samples as stereo_depth makes them,
+/// each standing for a square of `pixels_per_point` pixels a side) that lie in the box
+/// centre ± half_extent + margin, small holes closed, then eroded by `erode_px`. None when fewer
+/// than `min_pixels` remain.
 std::optional<ObjectMask> object_mask(const pcl::PointCloud<pcl::PointXYZ>& cloud, const msg::StereoCalibration& c,
                                       const Eigen::Vector3d& centre, const Eigen::Vector3d& half_extent,
-                                      double margin_m, int erode_px, int min_pixels);
+                                      double margin_m, int erode_px, int min_pixels, int pixels_per_point = 1);
 
 struct MatchOptions {
   double search_px = 2.0;  ///< around the SGBM disparity, each way

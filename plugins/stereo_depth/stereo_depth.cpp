@@ -64,7 +64,7 @@ class StereoDepth final : public Node {
     c.param("speckle_window_size", &Config::matcher, &M::speckle_window_size)
         .range(0, 10000)
         .with_unit("px")
-        .describe("speckle filter region size; 0 = off");
+        .describe("speckle filter region size, in full-resolution pixels (divided by downscale^2); 0 = off");
     c.param("speckle_range", &Config::matcher, &M::speckle_range)
         .range(0, 64)
         .with_unit("px")
@@ -92,7 +92,9 @@ class StereoDepth final : public Node {
     c.param("downscale", &Config::downscale)
         .range(1, 8)
         .describe(
-            "match on images shrunk by this factor (num_disparities is divided by it too): faster, coarser depth");
+            "match on images shrunk by this factor (num_disparities is divided by it too): faster, coarser depth. "
+            "With a disparity_refiner after the clusters this is coarse-to-fine: the objects are found at low "
+            "resolution and their disparity measured at full resolution");
     c.param("snapshot_frame", &Config::snapshot_frame)
         .at_least(-1)
         .describe("frame index saved as PNG with --report; -1 = none");
@@ -125,8 +127,10 @@ class StereoDepth final : public Node {
 
   explicit StereoDepth(NodeInit& init) : cfg_(init.config<Config>()) {
     MatcherOptions options = cfg_.matcher;
-    // Disparities shrink with the images; keep OpenCV's multiple of 16.
+    // Disparities shrink with the images; keep OpenCV's multiple of 16. Speckle regions shrink
+    // with the area: a drone of 100 pixels is 25 at half resolution, not a speckle.
     options.num_disparities = std::max(16, (options.num_disparities / cfg_.downscale + 15) / 16 * 16);
+    options.speckle_window_size /= cfg_.downscale * cfg_.downscale;
     num_disparities_ = options.num_disparities;
     matcher_ = make_matcher(options);
   }
@@ -139,6 +143,7 @@ class StereoDepth final : public Node {
     cloud.stamp = frame->stamp;
     cloud.frame = "camera";
     cloud.points = reproject(disparity, pair.calibration, cfg_.min_depth_m, cfg_.max_depth_m, cfg_.pixel_step);
+    cloud.pixels_per_point = cfg_.downscale * cfg_.pixel_step;
     if (static_cast<std::int64_t>(frame->frame_index) == cfg_.snapshot_frame && ctx.keeps_artifacts()) {
       ctx.add_artifact("left.png", encode_png(frame->left), "left image");
       ctx.add_artifact("right.png", encode_png(frame->right), "right image");

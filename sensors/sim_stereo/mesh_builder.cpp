@@ -1,5 +1,6 @@
 #include "mesh_builder.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace kestrel::sim {
@@ -64,9 +65,16 @@ void add_disc(mrpt::opengl::CSetOfTexturedTriangles& mesh, const Eigen::Vector3d
 }
 
 void add_tiled_ground(mrpt::opengl::CSetOfTexturedTriangles& mesh, double half_extent, double tile, double z) {
-  for (double x = -half_extent; x < half_extent - 1e-9; x += tile)
-    for (double y = -half_extent; y < half_extent - 1e-9; y += tile)
-      add_quad(mesh, {x, y, z}, {x + tile, y, z}, {x + tile, y + tile, z}, {x, y + tile, z}, 1.0f, 1.0f);
+  // Patches of several tiles, the texture repeating across each (GL_REPEAT, OpenGL's default):
+  // the same picture as one quad per tile, with a sixty-fourth of the triangles to transform
+  // and clip (the software renderer's cost grew with their number).
+  const double patch = tile * 8;
+  for (double x = -half_extent; x < half_extent - 1e-9; x += patch)
+    for (double y = -half_extent; y < half_extent - 1e-9; y += patch) {
+      const double x1 = std::min(x + patch, half_extent), y1 = std::min(y + patch, half_extent);
+      add_quad(mesh, {x, y, z}, {x1, y, z}, {x1, y1, z}, {x, y1, z}, static_cast<float>((x1 - x) / tile),
+               static_cast<float>((y1 - y) / tile));
+    }
 }
 
 }  // namespace kestrel::sim

@@ -18,8 +18,8 @@ void add_box(mrpt::opengl::CSetOfTexturedTriangles& mesh, const Eigen::Vector3d&
 void add_disc(mrpt::opengl::CSetOfTexturedTriangles& mesh, const Eigen::Vector3d& centre, double radius,
               double thickness, int sides = 16);
 
-/// Adds a horizontal rectangle at height z, split into tiles of `tile` metres, each carrying the
-/// whole texture once (a tiled ground).
+/// Adds a horizontal rectangle at height z whose texture repeats once every `tile` metres (a
+/// tiled ground), drawn as a few large patches.
 void add_tiled_ground(mrpt::opengl::CSetOfTexturedTriangles& mesh, double half_extent, double tile, double z = 0.0);
 
 }  // namespace kestrel::sim

@@ -108,26 +108,28 @@ class SimStereo final : public Node {
   }
 
   // Grey (unless colour was asked for), plus sensor noise from the node's seeded generator.
-  cv::Mat finish_image(const cv::Mat& bgr, std::mt19937_64& rng) const {
+  cv::Mat finish_image(const cv::Mat& bgr, std::mt19937_64& rng) {
     cv::Mat image;
     if (color_)
       image = bgr;
     else
       cv::cvtColor(bgr, image, cv::COLOR_BGR2GRAY);
     if (noise_sigma_ <= 0) return image;
-    std::normal_distribution<float> noise(0.f, static_cast<float>(noise_sigma_));
-    cv::Mat noisy(image.size(), image.type());
-    const int channels = image.channels();
-    for (int y = 0; y < image.rows; ++y) {
-      const uchar* in = image.ptr<uchar>(y);
-      uchar* out = noisy.ptr<uchar>(y);
-      for (int x = 0; x < image.cols * channels; ++x) out[x] = cv::saturate_cast<uchar>(in[x] + noise(rng));
-    }
+    // OpenCV's generator (multiply-with-carry, Ziggurat normals), seeded from the node's own
+    // stream: a fifth of the time of std::normal_distribution, and as reproducible.
+    cv::RNG generator(rng());
+    noise_.create(image.size(), CV_32FC(image.channels()));
+    generator.fill(noise_, cv::RNG::NORMAL, 0.0, noise_sigma_);
+    image.convertTo(sum_, noise_.type());
+    sum_ += noise_;
+    cv::Mat noisy;
+    sum_.convertTo(noisy, image.type());  // rounded and saturated, as a sensor's converter does
     return noisy;
   }
 
   sensors::CameraRigConfig rig_;
   double noise_sigma_;
+  cv::Mat noise_, sum_;  // working buffers, kept from frame to frame
   bool color_;
   WorldScene scene_;
   msg::StereoCalibration calibration_;

@@ -39,7 +39,8 @@ cv::Mat StereoRenderer::render_view(const mrpt::opengl::COpenGLScene& scene, con
   fbo_->getCamera(scene).setPose(mrpt::poses::CPose3D(camera.world_from_camera(), camera.position_world));
   mrpt::img::CImage image;
   fbo_->render_RGB(scene, image);
-  cv::Mat out = image.asCvMat<cv::Mat>(mrpt::img::DEEP_COPY);
+  // The image's pixels are a reference-counted cv::Mat inside CImage: shared, not copied.
+  cv::Mat out = image.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY);
   if (out.rows != calibration_.height || out.cols != calibration_.width)
     throw Error("renderer returned a " + std::to_string(out.cols) + "x" + std::to_string(out.rows) + " image");
   return out;

@@ -13,6 +13,10 @@ struct PointCloud {
   Time stamp{0};                 ///< capture time of the data the points came from
   std::string frame = "camera";  ///< camera: x right, y down, z forward (optical frame)
   pcl::PointCloud<pcl::PointXYZ>::ConstPtr points;
+  /// Points made one per image sample (stereo_depth): each stands for a square of this many
+  /// full-resolution pixels a side of the left image, centred where it projects (1: one pixel,
+  /// 2: matched at half resolution). 0: the points are not image samples (a voxel grid's).
+  int pixels_per_point = 0;
 };
 
 }  // namespace kestrel::msg
@@ -21,4 +25,7 @@ KESTREL_MESSAGE(kestrel::msg::PointCloud, "kestrel.PointCloud", "PCL XYZ point c
 KESTREL_MESSAGE_FIELDS(
     kestrel::msg::PointCloud, {"stamp", "Time", "ns", "", "capture time of the images the points came from"},
     {"frame", "string", "", "", "the points' frame: \"camera\" (optical: x right, y down, z forward)"},
-    {"points", "pcl::PointCloud<pcl::PointXYZ>::ConstPtr", "m", "in frame", "the points; shared, never modified"});
+    {"points", "pcl::PointCloud<pcl::PointXYZ>::ConstPtr", "m", "in frame", "the points; shared, never modified"},
+    {"pixels_per_point", "int", "px", "",
+     "image samples: the side of the square of full-resolution left-image pixels each point stands for; 0: not "
+     "image samples"});
