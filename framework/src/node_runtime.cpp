@@ -63,8 +63,9 @@ std::string_view Context::trigger() const {
   return rt_.inputs[static_cast<std::size_t>(rt_.current_trigger)].spec->name;
 }
 
-void Context::publish_erased(std::string_view output, std::shared_ptr<const void> payload, std::string_view type) {
-  rt_.publish(output, std::move(payload), type);
+void Context::publish_erased(std::string_view output, std::shared_ptr<const void> payload, std::string_view type,
+                             std::optional<Time> captured) {
+  rt_.publish(output, std::move(payload), type, captured);
 }
 
 Time Context::now() const { return rt_.run->executor->now(); }
@@ -173,7 +174,8 @@ void NodeRuntime::run_tick() {
   ++ticks;
 }
 
-void NodeRuntime::publish(std::string_view output, std::shared_ptr<const void> payload, std::string_view type) {
+void NodeRuntime::publish(std::string_view output, std::shared_ptr<const void> payload, std::string_view type,
+                          std::optional<Time> captured) {
   const int index = config->type->spec.output_index(output);
   if (index < 0) throw Error("published on '" + std::string(output) + "', which is not an output of " + this->type());
   const PortSpec& port = config->type->spec.outputs()[static_cast<std::size_t>(index)];
@@ -182,6 +184,7 @@ void NodeRuntime::publish(std::string_view output, std::shared_ptr<const void> p
   if (!payload) throw Error("published a null message on output '" + port.name + "'");
   const Envelope envelope{std::move(payload), type, run->executor->now(),
                           run->next_sequence.fetch_add(1, std::memory_order_relaxed)};
+  if (captured && *captured <= envelope.published_at) latency.record((envelope.published_at - *captured).count());
   messages_out.fetch_add(1, std::memory_order_relaxed);
   for (Edge* edge : outputs[static_cast<std::size_t>(index)]) run->executor->deliver(*edge, envelope);
 }

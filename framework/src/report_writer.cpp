@@ -73,12 +73,17 @@ void write_report(const std::filesystem::path& dir, const RunResult& result,
     }
   }
   md +=
-      "\n## Nodes\n\n| node | type | in | out | drops | errors | p50 µs | p99 µs | max µs |\n"
-      "|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
+      "\n## Nodes\n\nTimes inside the node (µs), and the age of what it publishes: capture stamp to publication "
+      "(ms).\n\n| node | type | in | out | drops | errors | p50 µs | p99 µs | max µs | age p50 ms | age p99 ms |\n"
+      "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  const auto age = [](const DurationHistogram& h, double q) {
+    return h.count() ? fmt::format("{:.1f}", static_cast<double>(h.quantile(q)) / 1e6) : std::string("-");
+  };
   for (const auto& n : result.nodes) {
-    md += fmt::format("| {} | {} | {} | {} | {} | {} | {:.1f} | {:.1f} | {:.1f} |\n", n.id, n.type, n.messages_in,
-                      n.messages_out, n.drops, n.errors, n.processing.quantile(0.5) / 1e3,
-                      n.processing.quantile(0.99) / 1e3, n.processing.max() / 1e3);
+    md += fmt::format("| {} | {} | {} | {} | {} | {} | {:.1f} | {:.1f} | {:.1f} | {} | {} |\n", n.id, n.type,
+                      n.messages_in, n.messages_out, n.drops, n.errors, n.processing.quantile(0.5) / 1e3,
+                      n.processing.quantile(0.99) / 1e3, n.processing.max() / 1e3, age(n.latency, 0.5),
+                      age(n.latency, 0.99));
   }
   md +=
       "\n## Connections\n\n| connection | policy | delivered | drops | queue high-water |\n|---|---|---:|---:|---:|\n";

@@ -41,6 +41,7 @@ void collect_stats(const detail::RunState& run, RunResult& result) {
     for (const auto& slot : node->inputs)
       if (slot.edge) s.drops += slot.edge->dropped;
     s.processing = node->processing;
+    s.latency = node->latency;
   }
   for (const auto& edge : run.edges) {
     ConnectionStats& c = result.connections.emplace_back();
@@ -68,7 +69,11 @@ nlohmann::json stats_json(const RunResult& result) {
                       {{"p50", us(n.processing.quantile(0.5))},
                        {"p99", us(n.processing.quantile(0.99))},
                        {"max", us(n.processing.max())},
-                       {"mean", n.processing.mean() / 1000.0}}}});
+                       {"mean", n.processing.mean() / 1000.0}}},
+                     {"latency_us", n.latency.count() == 0 ? nlohmann::json()
+                                                           : nlohmann::json{{"p50", us(n.latency.quantile(0.5))},
+                                                                            {"p99", us(n.latency.quantile(0.99))},
+                                                                            {"max", us(n.latency.max())}}}});
   }
   nlohmann::json connections = nlohmann::json::array();
   for (const auto& c : result.connections) {

@@ -83,6 +83,7 @@ class NodeRuntime {
   std::atomic<std::uint64_t> calls{0};
   std::uint64_t skipped_ticks = 0;
   DurationHistogram processing;
+  DurationHistogram latency;  // capture stamp to publication, of stamped messages
 
   // Realtime executor only: guards inputs and queues of this node.
   std::mutex mutex;
@@ -114,7 +115,8 @@ class NodeRuntime {
   /// Calls tick() and counts it as done.
   void run_tick();
 
-  void publish(std::string_view output, std::shared_ptr<const void> payload, std::string_view type);
+  void publish(std::string_view output, std::shared_ptr<const void> payload, std::string_view type,
+               std::optional<Time> captured = std::nullopt);
 };
 
 class RunState {

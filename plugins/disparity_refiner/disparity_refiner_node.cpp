@@ -23,6 +23,8 @@ struct RefinerConfig {
   double search_px = 2.0;
   std::int64_t iterations = 10;
   std::int64_t history = 8;
+  BackgroundOptions background;
+  double centre_behind_surface_m = 0.0;
 };
 
 class DisparityRefiner final : public Node {
@@ -55,17 +57,40 @@ class DisparityRefiner final : public Node {
         .range(0.5, 64.0)
         .describe("match: whole-pixel search around the SGBM disparity, each way");
     c.param("iterations", &C::iterations).range(0, 100).describe("match: Gauss-Newton steps after the search");
+    c.param("background_ratio", &C::background, &BackgroundOptions::ratio)
+        .range(0.0, 1.0)
+        .describe(
+            "match: a pixel of the object's mask is background when a disparity behind the object explains it at "
+            "this share of the object's own cost or less (the matcher's blocks spread objects onto the background "
+            "around them); 0: keep every pixel");
+    c.param("background_radius_px", &C::background, &BackgroundOptions::radius_px)
+        .range(0, 5)
+        .with_unit("px")
+        .describe("match: the background test compares windows of 2 r + 1 pixels square");
+    c.param("background_gap_px", &C::background, &BackgroundOptions::gap_px)
+        .range(0.5, 20.0)
+        .with_unit("px")
+        .describe("match: the background's disparities tried: 0 up to the object's minus this");
+    c.param("centre_behind_surface_m", &C::centre_behind_surface_m)
+        .range(0.0, 10.0)
+        .with_unit("m")
+        .describe(
+            "the target model: how far its centre lies behind the surface the camera measures, along the line of "
+            "sight (the simulated hexacopter: 0.077 m, from its rendered depth by kestrel_detection_bias); 0: "
+            "detections on the surface");
     c.param("history", &C::history)
         .range(1, 1000)
         .describe("frames and clouds kept to find the capture of a late detection");
     return NodeSpec("disparity_refiner", "Places detections from their object's sub-pixel disparity")
         .details(
-            "For each detection, the stereo cloud's points inside its box (grown by margin_m) are "
-            "projected back into the left image (each as the square of pixels it was matched from): the object's pixels, holes closed and the silhouette eroded by "
-            "erode_px. Its disparity is measured as a whole (refine: match, or mean), and the detection is placed "
-            "at that disparity under the pixels' image centroid: averaging in disparity, not depth. A detection "
-            "without enough pixels, texture or a match, or whose capture is no longer held, passes unchanged and is "
-            "counted.")
+            "For each detection, the stereo cloud's points inside its box (grown by margin_m) are projected back "
+            "into the left image (each as the square of pixels it was matched from): the object's pixels, holes "
+            "closed and the silhouette eroded by erode_px. With refine: match, pixels that a disparity behind the "
+            "object explains clearly better than its own are taken out (background_ratio). Its disparity is "
+            "measured as a whole (refine: match, or mean), and the detection is placed at that disparity under the "
+            "pixels' image centroid (averaging in disparity, not depth), then centre_behind_surface_m further along "
+            "the line of sight. A detection without enough pixels, texture or a match, or whose capture is no "
+            "longer held, passes unchanged and is counted.")
         .input(kDetections, "the clusterer's detections")
         .input(kFrame, "the stereo pairs they are found in (kept by capture time)")
         .input(kCloud, "the clouds of those pairs (stereo_depth, before the voxel grid), at any downscale")
@@ -100,18 +125,21 @@ class DisparityRefiner final : public Node {
   void finish(Context& ctx) override {
     const std::string id = ctx.id();
     const double shift = refined_ ? shift_sum_ / static_cast<double>(refined_) : 0.0;
-    ctx.set_report_section(id,
-                           {{"detections", detections_},
-                            {"refined", refined_},
-                            {"no_capture", no_capture_},
-                            {"no_pixels", no_pixels_},
-                            {"no_match", no_match_},
-                            {"mean_abs_shift_px", refined_ ? nlohmann::json(shift) : nlohmann::json()}},
-                           fmt::format("{} of {} detections placed from their object's disparity; left as they were: "
-                                       "{} without their capture, {} with too few pixels, {} without a match. Mean "
-                                       "|refined - SGBM median| disparity {:.3f} px.\n",
-                                       refined_, detections_, no_capture_, no_pixels_, no_match_, shift));
-    for (const char* k : {"detections", "refined", "no_capture", "no_pixels", "no_match"})
+    ctx.set_report_section(
+        id,
+        {{"detections", detections_},
+         {"refined", refined_},
+         {"no_capture", no_capture_},
+         {"no_pixels", no_pixels_},
+         {"no_match", no_match_},
+         {"background_pixels_dropped", background_pixels_},
+         {"mean_abs_shift_px", refined_ ? nlohmann::json(shift) : nlohmann::json()}},
+        fmt::format("{} of {} detections placed from their object's disparity; left as they were: "
+                    "{} without their capture, {} with too few pixels, {} without a match. Mean "
+                    "|refined - SGBM median| disparity {:.3f} px; {} background pixels taken out "
+                    "of the objects' masks.\n",
+                    refined_, detections_, no_capture_, no_pixels_, no_match_, shift, background_pixels_));
+    for (const char* k : {"detections", "refined", "no_capture", "no_pixels", "no_match", "background_pixels_dropped"})
       ctx.describe_quantity(id + "." + k);
     ctx.describe_quantity(id + ".mean_abs_shift_px", "px");
   }
@@ -132,8 +160,9 @@ class DisparityRefiner final : public Node {
   void keep(std::shared_ptr<const msg::PointCloud> cloud) {
     if (!cloud->points) throw Error("point cloud message without points");
     if (cloud->pixels_per_point < 1)
-      throw Error("the cloud's points are not image samples (pixels_per_point 0): connect stereo_depth's cloud, "
-                  "before the voxel grid");
+      throw Error(
+          "the cloud's points are not image samples (pixels_per_point 0): connect stereo_depth's cloud, "
+          "before the voxel grid");
     slot(cloud->stamp)->cloud = std::move(cloud);
   }
 
@@ -164,9 +193,9 @@ class DisparityRefiner final : public Node {
 
   std::optional<Eigen::Vector3d> refine(Capture& c, const msg::Detection& d) {
     const msg::StereoCalibration& calibration = c.frame->calibration;
-    const auto mask = object_mask(*c.cloud->points, calibration, d.position, 0.5 * d.extent, cfg_.margin_m,
-                                  static_cast<int>(cfg_.erode_px), static_cast<int>(cfg_.min_pixels),
-                                  c.cloud->pixels_per_point);
+    auto mask =
+        object_mask(*c.cloud->points, calibration, d.position, 0.5 * d.extent, cfg_.margin_m,
+                    static_cast<int>(cfg_.erode_px), static_cast<int>(cfg_.min_pixels), c.cloud->pixels_per_point);
     if (!mask) {
       ++no_pixels_;
       return std::nullopt;
@@ -174,6 +203,13 @@ class DisparityRefiner final : public Node {
     if (cfg_.refine == RefinerConfig::Method::match && c.left.empty()) {
       c.left = grey(c.frame->left);
       c.right = grey(c.frame->right);
+    }
+    if (cfg_.refine == RefinerConfig::Method::match && cfg_.background.ratio > 0.0) {
+      background_pixels_ += drop_background(c.left, c.right, *mask, cfg_.background);
+      if (mask->count < cfg_.min_pixels) {
+        ++no_pixels_;
+        return std::nullopt;
+      }
     }
     const std::optional<double> disparity =
         cfg_.refine == RefinerConfig::Method::mean
@@ -184,12 +220,13 @@ class DisparityRefiner final : public Node {
       return std::nullopt;
     }
     shift_sum_ += std::abs(*disparity - mask->sgbm_disparity);
-    return place(calibration, *mask, *disparity);
+    return centre_behind(place(calibration, *mask, *disparity), cfg_.centre_behind_surface_m);
   }
 
   RefinerConfig cfg_;
   std::deque<Capture> captures_;
   std::uint64_t detections_ = 0, refined_ = 0, no_capture_ = 0, no_pixels_ = 0, no_match_ = 0;
+  std::uint64_t background_pixels_ = 0;
   double shift_sum_ = 0.0;
 };
 KESTREL_REGISTER_NODE(DisparityRefiner)

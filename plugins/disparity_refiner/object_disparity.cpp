@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <opencv2/imgproc.hpp>
 
 namespace kestrel::refine {
@@ -79,6 +80,40 @@ std::optional<ObjectMask> object_mask(const pcl::PointCloud<pcl::PointXYZ>& clou
   if (own.empty()) return std::nullopt;
   mask.sgbm_disparity = median(own);
   return mask;
+}
+
+int drop_background(const cv::Mat& left, const cv::Mat& right, ObjectMask& mask, const BackgroundOptions& o) {
+  CV_Assert(left.type() == CV_32F && right.type() == CV_32F && left.size() == right.size());
+  const int r = o.radius_px;
+  const double object = mask.sgbm_disparity;
+  const double farthest_behind = object - o.gap_px;
+  if (farthest_behind < 0) return 0;  // nothing can be told apart from the object
+  int removed = 0;
+  std::vector<cv::Point> drop;
+  for (int y = 0; y < mask.pixels.rows; ++y)
+    for (int x = 0; x < mask.pixels.cols; ++x) {
+      if (!mask.pixels.at<std::uint8_t>(y, x)) continue;
+      const int u = mask.roi.x + x, v = mask.roi.y + y;
+      // The whole window, at every candidate, inside both images.
+      if (v - r < 0 || v + r >= left.rows || u + r >= left.cols || u - r - object - 1 < 0) continue;
+      double own = 0.0;
+      for (int j = -r; j <= r; ++j)
+        for (int i = -r; i <= r; ++i)
+          own += std::abs(left.at<float>(v + j, u + i) - sample(right, u + i - object, v + j));
+      double best_behind = std::numeric_limits<double>::infinity();
+      // Half-pixel steps: far backgrounds have fractional disparities.
+      for (double d = 0.0; d <= farthest_behind; d += 0.5) {
+        double cost = 0.0;
+        for (int j = -r; j <= r && cost < best_behind; ++j)
+          for (int i = -r; i <= r; ++i)
+            cost += std::abs(left.at<float>(v + j, u + i) - sample(right, u + i - d, v + j));
+        best_behind = std::min(best_behind, cost);
+      }
+      if (best_behind < o.ratio * own) drop.emplace_back(x, y);
+    }
+  for (const auto& p : drop) mask.pixels.at<std::uint8_t>(p) = 0, ++removed;
+  mask.count -= removed;
+  return removed;
 }
 
 std::optional<double> robust_mean_disparity(const ObjectMask& mask) {
@@ -182,6 +217,10 @@ Eigen::Vector3d place(const msg::StereoCalibration& c, const ObjectMask& mask, d
   const double u = mask.roi.x + m.m10 / m.m00, v = mask.roi.y + m.m01 / m.m00;
   const double z = c.fx * c.baseline_m / disparity;
   return {(u - c.cx) * z / c.fx, (v - c.cy) * z / c.fy, z};
+}
+
+Eigen::Vector3d centre_behind(const Eigen::Vector3d& surface, double metres) {
+  return surface + metres * surface.normalized();
 }
 
 }  // namespace kestrel::refine

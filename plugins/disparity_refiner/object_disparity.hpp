@@ -37,6 +37,20 @@ std::optional<ObjectMask> object_mask(const pcl::PointCloud<pcl::PointXYZ>& clou
                                       const Eigen::Vector3d& centre, const Eigen::Vector3d& half_extent,
                                       double margin_m, int erode_px, int min_pixels, int pixels_per_point = 1);
 
+struct BackgroundOptions {
+  double ratio = 0.85;  ///< background when a disparity behind explains a pixel at this share of the object's cost
+  double gap_px = 1.5;  ///< candidates behind the object: from 0 up to its disparity minus this
+  int radius_px = 2;    ///< the compared windows are (2 radius + 1) pixels square
+};
+
+/// Removes from the mask the pixels that a disparity behind the object explains clearly better
+/// than the object's own (sum of absolute differences over a small window, the object's
+/// disparity sampled bilinearly): background onto which the matcher's blocks spread the object,
+/// such as the textured ground below a drone at the horizon. Smooth pixels (a plain sky), which
+/// every disparity explains alike, stay. Returns how many pixels were removed.
+/// `left` and `right` are CV_32F grey images.
+int drop_background(const cv::Mat& left, const cv::Mat& right, ObjectMask& mask, const BackgroundOptions& options);
+
 struct MatchOptions {
   double search_px = 2.0;  ///< around the SGBM disparity, each way
   int iterations = 10;     ///< Gauss-Newton steps after the whole-pixel search
@@ -55,7 +69,10 @@ std::optional<double> match_disparity(const cv::Mat& left, const cv::Mat& right,
 /// median absolute deviations of their median.
 std::optional<double> robust_mean_disparity(const ObjectMask& mask);
 
-/// Where the object is: its disparity, at the mask's image centroid.
+/// Where the object's surface is: its disparity, at the mask's image centroid.
 Eigen::Vector3d place(const msg::StereoCalibration& c, const ObjectMask& mask, double disparity);
+
+/// The target model: its centre lies `metres` behind the surface point, along the line of sight.
+Eigen::Vector3d centre_behind(const Eigen::Vector3d& surface, double metres);
 
 }  // namespace kestrel::refine

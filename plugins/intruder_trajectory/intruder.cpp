@@ -28,6 +28,8 @@ struct IntruderConfig {
   Eigen::Vector3d random_centre_m{5.0, 0.0, 2.0};
   Eigen::Vector3d random_half_extent_m{1.0, 1.5, 0.75};
   double max_speed_mps = 3.0;
+  double max_acceleration_mps2 = 0.0;
+  double random_max_frequency_hz = 0.25;
   std::string file;
   AtEnd at_end = AtEnd::repeat;
   double ground_z_m = 0.0;
@@ -80,6 +82,14 @@ class IntruderNode final : public Node {
         .range(0.0, 100.0)
         .describe("random: half size of that box");
     c.param("max_speed_mps", &C::max_speed_mps).with_unit("m/s").range(0.0, 100.0).describe("random: speed limit");
+    c.param("max_acceleration_mps2", &C::max_acceleration_mps2)
+        .with_unit("m/s^2")
+        .range(0.0, 1000.0)
+        .describe("random: acceleration limit; 0: only the box and the speed bound it");
+    c.param("random_max_frequency_hz", &C::random_max_frequency_hz)
+        .with_unit("Hz")
+        .range(0.03, 10.0)
+        .describe("random: the quickest manoeuvre's frequency (its period is the shortest)");
     c.param("file", &C::file).describe("file: CSV of t,x,y,z (s, world m)");
     c.choice("at_end", &C::at_end, {{"hold", C::AtEnd::hold}, {"repeat", C::AtEnd::repeat}})
         .describe("line and file: after the end, hold the last point or go again (line: back and forth)");
@@ -145,8 +155,9 @@ class IntruderNode final : public Node {
                                                      cfg.line_acceleration_mps2);
         break;
       case Shape::random:
-        trajectory_ = std::make_unique<RandomManoeuvre>(cfg.random_centre_m, cfg.random_half_extent_m,
-                                                        cfg.max_speed_mps, init.seed());
+        trajectory_ =
+            std::make_unique<RandomManoeuvre>(cfg.random_centre_m, cfg.random_half_extent_m, cfg.max_speed_mps,
+                                              init.seed(), cfg.max_acceleration_mps2, cfg.random_max_frequency_hz);
         break;
       case Shape::file:
         trajectory_ = std::make_unique<RecordedFlight>(cfg.file, repeat);

@@ -79,10 +79,10 @@ State StraightLine::at(double t) const {
 }
 
 RandomManoeuvre::RandomManoeuvre(const Eigen::Vector3d& centre, const Eigen::Vector3d& half_extent, double max_speed,
-                                 std::uint64_t seed)
+                                 std::uint64_t seed, double max_acceleration, double max_frequency_hz)
     : centre_(centre) {
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> frequency(0.03, 0.25);  // Hz: manoeuvres of 4 to 30 s
+  std::uniform_real_distribution<double> frequency(0.03, std::max(0.03, max_frequency_hz));  // Hz
   std::uniform_real_distribution<double> phase(0.0, 2.0 * M_PI);
   std::uniform_real_distribution<double> weight(0.3, 1.0);
   constexpr int kWaves = 3;
@@ -92,15 +92,20 @@ RandomManoeuvre::RandomManoeuvre(const Eigen::Vector3d& centre, const Eigen::Vec
       waves_[axis].push_back({weight(rng), 2.0 * M_PI * frequency(rng), phase(rng)});
       weights += waves_[axis].back().amplitude;
     }
-    // Scale so the sum can never leave the box, then so the speed bound |v| <= sum(a w) holds.
-    double speed_bound = 0.0;
+    // Scale so the sum can never leave the box, then so the speed bound |v| <= sum(a w) and the
+    // acceleration bound |a| <= sum(a w^2) hold: a third of each limit's square per axis.
+    double speed_bound = 0.0, acceleration_bound = 0.0;
     for (auto& w : waves_[axis]) {
       w.amplitude *= half_extent[axis] / weights;
       speed_bound += w.amplitude * w.omega;
+      acceleration_bound += w.amplitude * w.omega * w.omega;
     }
-    const double limit = max_speed / std::sqrt(3.0);
-    if (speed_bound > limit)
-      for (auto& w : waves_[axis]) w.amplitude *= limit / speed_bound;
+    double scale = 1.0;
+    if (const double limit = max_speed / std::sqrt(3.0); speed_bound > limit) scale = limit / speed_bound;
+    if (const double limit = max_acceleration / std::sqrt(3.0);
+        max_acceleration > 0 && acceleration_bound * scale > limit)
+      scale = limit / acceleration_bound;
+    for (auto& w : waves_[axis]) w.amplitude *= scale;
   }
 }
 

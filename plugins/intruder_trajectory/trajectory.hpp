@@ -62,8 +62,10 @@ class StraightLine final : public Trajectory {
 /// frequencies and phases, scaled to stay inside a box and under a speed limit.
 class RandomManoeuvre final : public Trajectory {
  public:
+  /// Manoeuvres of 1 / max_frequency_hz to 30 s; 0 for max_acceleration: no bound but the box's
+  /// and the speed's.
   RandomManoeuvre(const Eigen::Vector3d& centre, const Eigen::Vector3d& half_extent, double max_speed,
-                  std::uint64_t seed);
+                  std::uint64_t seed, double max_acceleration = 0.0, double max_frequency_hz = 0.25);
   State at(double t) const override;
 
  private:

@@ -19,6 +19,7 @@ struct SimStereoConfig {
   sensors::CameraRigConfig rig;
   double noise_sigma = 1.5;
   bool color = false;
+  std::int64_t supersample = 1;
   SceneOptions scene;
 };
 
@@ -35,6 +36,11 @@ class SimStereo final : public Node {
     sensors::declare_camera_rig(c, &C::rig);
     c.param("noise_sigma", &C::noise_sigma).range(0.0, 50.0).with_unit("grey levels").describe("Gaussian image noise");
     c.param("color", &C::color).describe("publish BGR images instead of 8-bit grey");
+    c.param("supersample", &C::supersample)
+        .range(1, 4)
+        .describe(
+            "render k x k samples per pixel and average them, as a sensor integrates light over a pixel: edges then "
+            "fall between pixels instead of on whole ones (2: about twice the render time)");
     c.param("clutter_count", &C::scene, &SceneOptions::clutter_count)
         .range(0, 500)
         .describe("trees and buildings in the background");
@@ -103,7 +109,7 @@ class SimStereo final : public Node {
         color_(cfg.color),
         scene_(cfg.scene),
         calibration_(rig_.calibration()),
-        renderer_(calibration_) {
+        renderer_(calibration_, static_cast<int>(cfg.supersample)) {
     init.set_rate(rig_.fps);
   }
 

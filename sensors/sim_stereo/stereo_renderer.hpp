@@ -19,7 +19,10 @@ namespace kestrel::sim {
 
 class StereoRenderer {
  public:
-  explicit StereoRenderer(const msg::StereoCalibration& calibration);
+  /// `supersample` k > 1 renders k times the resolution on each axis and averages each k x k
+  /// block into one pixel, as a sensor integrates the light over a pixel's area: edges then fall
+  /// between pixels, as they do in a real camera, rather than on whole pixels.
+  explicit StereoRenderer(const msg::StereoCalibration& calibration, int supersample = 1);
   ~StereoRenderer();
 
   /// Renders BGR images. The EGL context is made on the first call, on the calling thread.
@@ -29,8 +32,16 @@ class StereoRenderer {
   /// One view (BGR), for tests.
   cv::Mat render_view(const mrpt::opengl::COpenGLScene& scene, const geometry::CameraPose& camera);
 
+  /// One view's depth (CV_32F, metres along the optical axis): the ground truth of every pixel,
+  /// for measuring the detection chain against.
+  cv::Mat render_depth(const mrpt::opengl::COpenGLScene& scene, const geometry::CameraPose& camera);
+
  private:
-  msg::StereoCalibration calibration_;
+  void prepare(const mrpt::opengl::COpenGLScene& scene, const geometry::CameraPose& camera);
+
+  msg::StereoCalibration calibration_;  // of the images returned
+  msg::StereoCalibration rendered_;     // of the images drawn (supersampled)
+  int supersample_;
   std::unique_ptr<mrpt::opengl::CFBORender> fbo_;
 };
 

@@ -145,3 +145,25 @@ TEST(ClosedLoop, TheDetectionLevelLoopIsReproducibleBitForBit) {
   const RunResult c = run(graph, line, 8);  // another seed: other noise, another flight
   EXPECT_NE(a.report.at("hunter"), c.report.at("hunter"));
 }
+
+TEST(RunStatistics, EachNodeReportsTheAgeOfWhatItPublishesSinceCapture) {
+  // The detection-level camera holds its detections back 3 frames (0.1 s at 30 FPS) and stamps
+  // them with their capture time: that age shows at the camera (whose truth leaves at once, so
+  // it is the camera's upper quantile), and downstream at the tracker; the intruder's truth has
+  // no age.
+  const RunResult r =
+      run(KESTREL_SOURCE_DIR "/graphs/sim_intercept_fast.yaml", {"camera.latency_frames=3"}, std::nullopt, 5.0);
+  ASSERT_EQ(r.outcome, RunOutcome::completed) << (r.errors.empty() ? "" : r.errors.front());
+  const auto node = [&](const std::string& id) -> const NodeStats& {
+    for (const auto& n : r.nodes)
+      if (n.id == id) return n;
+    throw std::runtime_error("no node " + id);
+  };
+  const auto ms = [](const DurationHistogram& h, double q) { return static_cast<double>(h.quantile(q)) / 1e6; };
+  ASSERT_GT(node("camera").latency.count(), 100u);
+  EXPECT_NEAR(ms(node("camera").latency, 0.99), 100.0, 2.0);
+  EXPECT_NEAR(ms(node("tracker").latency, 0.5), 100.0, 2.0);
+  EXPECT_LT(ms(node("intruder").latency, 0.99), 0.01);
+  const std::string table = format_stats(r);
+  EXPECT_THAT(table, testing::HasSubstr("age p50 ms"));
+}

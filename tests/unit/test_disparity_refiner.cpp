@@ -139,3 +139,73 @@ TEST(ObjectDisparity, NoTextureNoMatch) {
   ASSERT_TRUE(mask.has_value());
   EXPECT_FALSE(match_disparity(flat, flat, *mask, {}).has_value());
 }
+
+TEST(ObjectDisparity, CoarsePointsStandForSquaresOfPixels) {
+  // Matched at half resolution: one point per 2x2 block, at the block's centre.
+  const auto c = calibration();
+  const cv::Rect r(300, 200, 24, 16);
+  const double z = 5.0;
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  for (int v = r.y; v < r.y + r.height; v += 2)
+    for (int u = r.x; u < r.x + r.width; u += 2) {
+      const double uc = u + 0.5, vc = v + 0.5;  // the block's centre in full-resolution pixels
+      cloud.push_back(pcl::PointXYZ(static_cast<float>((uc - c.cx) * z / c.fx),
+                                    static_cast<float>((vc - c.cy) * z / c.fy), static_cast<float>(z)));
+    }
+  const auto mask = object_mask(cloud, c, {0, 0, 0}, {100, 100, 100}, 0.0, 0, 20, 2);
+  ASSERT_TRUE(mask.has_value());
+  EXPECT_EQ(mask->roi, r);
+  EXPECT_EQ(mask->count, r.area());
+  const Eigen::Vector3d p = place(c, *mask, c.fx * c.baseline_m / z);
+  EXPECT_NEAR(p.x(), (r.x + (r.width - 1) / 2.0 - c.cx) * z / c.fx, 1e-9);  // centred, not half a pixel off
+  EXPECT_NEAR(p.y(), (r.y + (r.height - 1) / 2.0 - c.cy) * z / c.fy, 1e-9);
+}
+
+namespace {
+
+// A textured object (disparity 8) in front of a background (disparity 1), textured or plain;
+// integer disparities, so the right image is the left one's pixels moved.
+std::pair<cv::Mat, cv::Mat> object_before_background(cv::Rect object, bool textured_background) {
+  const cv::Mat object_texture = texture(640, 480, 1.2, 3);
+  const cv::Mat background = textured_background ? texture(640, 480, 1.2, 4) : cv::Mat(480, 640, CV_32F, 200.0f);
+  cv::Mat left(480, 640, CV_32F), right(480, 640, CV_32F);
+  for (int y = 0; y < 480; ++y)
+    for (int x = 0; x < 640; ++x) {
+      left.at<float>(y, x) = object.contains({x, y}) ? object_texture.at<float>(y, x) : background.at<float>(y, x);
+      const cv::Point seen(x + 8, y);  // where the object pixel seen here sits in the left image
+      right.at<float>(y, x) =
+          object.contains(seen) ? object_texture.at<float>(seen) : background.at<float>(y, std::min(x + 1, 639));
+    }
+  return {left, right};
+}
+
+}  // namespace
+
+TEST(ObjectDisparity, BackgroundTheObjectBledOntoIsTakenOutAndPlainSkyStays) {
+  const auto c = calibration();
+  const cv::Rect object(300, 200, 30, 20);
+  const cv::Rect bled(object.x - 4, object.y - 4, object.width + 8, object.height + 8);  // a block matcher's spread
+  for (const bool textured : {true, false}) {
+    const auto [left, right] = object_before_background(object, textured);
+    auto mask = object_mask(points(c, bled, 8.0), c, {0, 0, 0}, {100, 100, 100}, 0.0, 0, 20);
+    ASSERT_TRUE(mask.has_value());
+    const int ring = bled.area() - object.area();
+    const int removed = drop_background(left, right, *mask, {});
+    int object_kept = 0;
+    for (int y = object.y; y < object.y + object.height; ++y)
+      for (int x = object.x; x < object.x + object.width; ++x)
+        object_kept += mask->pixels.at<std::uint8_t>(y - mask->roi.y, x - mask->roi.x) != 0;
+    EXPECT_GE(object_kept, object.area() * 95 / 100) << (textured ? "textured" : "plain");
+    EXPECT_EQ(mask->count, bled.area() - removed);
+    if (textured)
+      EXPECT_GE(removed, ring * 70 / 100);  // the ring's window straddles the object within 2 px of it
+    else
+      EXPECT_LE(removed, ring * 10 / 100);  // every disparity explains a plain sky alike
+  }
+}
+
+TEST(ObjectDisparity, TheCentreLiesBehindTheSurfaceAlongTheLineOfSight) {
+  const Eigen::Vector3d centre = centre_behind({3.0, 0.0, 4.0}, 0.5);
+  EXPECT_TRUE(centre.isApprox(Eigen::Vector3d(3.3, 0.0, 4.4), 1e-12));
+  EXPECT_TRUE(centre_behind({1.0, 2.0, 3.0}, 0.0).isApprox(Eigen::Vector3d(1.0, 2.0, 3.0)));
+}

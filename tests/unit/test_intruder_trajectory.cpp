@@ -110,6 +110,27 @@ TEST(RandomManoeuvre, StaysInItsBoxUnderItsSpeedLimitAndReproduces) {
   expect_consistent_velocity(a, 17.3);
 }
 
+TEST(RandomManoeuvre, KeepsUnderItsAccelerationLimit) {
+  // Quick manoeuvres (up to 0.5 Hz) in a wide box: without a limit they would pull more than 5 m/s^2.
+  const Eigen::Vector3d centre(5.5, 0, 2), half(2.5, 1.5, 0.75);
+  double unlimited = 0, limited = 0;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    const RandomManoeuvre free(centre, half, 3.0, seed, 0.0, 0.5), bounded(centre, half, 3.0, seed, 5.0, 0.5);
+    for (double t = 0; t < 120; t += 0.01) {
+      // Acceleration by central differences of the velocity.
+      const auto accel = [&](const RandomManoeuvre& m) {
+        return ((m.at(t + 1e-4).velocity - m.at(t - 1e-4).velocity) / 2e-4).norm();
+      };
+      unlimited = std::max(unlimited, accel(free));
+      limited = std::max(limited, accel(bounded));
+      EXPECT_LE(bounded.at(t).velocity.norm(), 3.0 + 1e-9);
+    }
+  }
+  EXPECT_LE(limited, 5.0 + 1e-6);
+  EXPECT_GT(limited, 2.0);    // it still manoeuvres hard
+  EXPECT_GT(unlimited, 5.0);  // the limit did something
+}
+
 TEST(RecordedFlight, InterpolatesHoldsAndLoops) {
   const auto file = write_csv("kestrel-flight.csv", "t,x,y,z\n10,0,0,0\n12,2,0,0\n14,2,4,0\n");
   const RecordedFlight hold(file, false);

@@ -27,6 +27,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <random>
 #include <string>
 #include <string_view>
@@ -109,9 +110,16 @@ class Context {
   /// Name of the input whose message triggered this call; empty for tick() and finish().
   std::string_view trigger() const;
 
+  /// Messages with a `stamp` (capture time, see docs/messages.md) also count towards the node's
+  /// latency since capture in `--stats`.
   template <MessageType T>
   void publish(const Output<T>& port, std::shared_ptr<const T> message) {
-    publish_erased(port.name, std::shared_ptr<const void>(std::move(message)), MessageTraits<T>::name);
+    std::optional<Time> captured;
+    if constexpr (requires(const T& m) {
+                    { m.stamp } -> std::convertible_to<Time>;
+                  })
+      if (message) captured = message->stamp;
+    publish_erased(port.name, std::shared_ptr<const void>(std::move(message)), MessageTraits<T>::name, captured);
   }
   template <MessageType T>
   void publish(const Output<T>& port, T message) {
@@ -146,7 +154,8 @@ class Context {
   void request_stop();
 
  private:
-  void publish_erased(std::string_view output, std::shared_ptr<const void> payload, std::string_view type);
+  void publish_erased(std::string_view output, std::shared_ptr<const void> payload, std::string_view type,
+                      std::optional<Time> captured);
   detail::NodeRuntime& rt_;
 };
 

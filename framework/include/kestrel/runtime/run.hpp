@@ -37,6 +37,9 @@ struct NodeStats {
   std::uint64_t errors = 0;  ///< exceptions caught from this node
   std::uint64_t calls = 0;
   DurationHistogram processing;  ///< time inside process() and tick()
+  /// From the capture stamp of each stamped message the node published to its publication, on
+  /// the run's clock: under the realtime executor, how old the data is when it leaves the node.
+  DurationHistogram latency;
 };
 
 struct ConnectionStats {
