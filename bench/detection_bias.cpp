@@ -28,6 +28,7 @@
 #include <opencv2/imgproc.hpp>
 #include <string>
 
+#include "camera_rig.hpp"
 #include "clustering.hpp"
 #include "kestrel/evaluation/body_axes.hpp"
 #include "object_disparity.hpp"
@@ -129,10 +130,9 @@ cv::Mat draw_masks(const cv::Mat& left, const cv::Mat& truth, const refine::Obje
 
 Budget measure(double distance, int frames, int downscale, int supersample, const refine::BackgroundOptions& background,
                const std::string& dump_dir) {
-  msg::StereoCalibration c;
-  c.fx = c.fy = sim::focal_from_hfov(640, 92.8);
-  c.cx = 319.5;
-  c.cy = 239.5;
+  sensors::CameraRigConfig rig;  // the paper's camera, 2 m up, looking along world x
+  rig.hfov_deg = 92.8;
+  const msg::StereoCalibration c = rig.calibration();
   sim::SceneOptions scene;
   scene.clutter_count = 0;
   sim::WorldScene world(scene);
@@ -141,7 +141,7 @@ Budget measure(double distance, int frames, int downscale, int supersample, cons
   matcher_options.num_disparities = std::max(16, (80 / downscale + 15) / 16 * 16);
   matcher_options.speckle_window_size /= downscale * downscale;
   const auto matcher = stereo::make_matcher(matcher_options);
-  const auto camera = geometry::level_camera({0, 0, 2}, 0.0);
+  const auto camera = rig.pose(nullptr);
   const intruder::FigureEight path(camera, distance, 1.0, 0.5, 12.0);
   cv::RNG rng(1);
   world.hide_unplaced_intruders();

@@ -95,7 +95,8 @@ int drop_background(const cv::Mat& left, const cv::Mat& right, ObjectMask& mask,
       if (!mask.pixels.at<std::uint8_t>(y, x)) continue;
       const int u = mask.roi.x + x, v = mask.roi.y + y;
       // The whole window, at every candidate, inside both images.
-      if (v - r < 0 || v + r >= left.rows || u + r >= left.cols || u - r - object - 1 < 0) continue;
+      // (Bilinear samples read one pixel to the right of where they fall.)
+      if (v - r < 0 || v + r >= left.rows || u + r + 1 >= left.cols || u - r - object - 1 < 0) continue;
       double own = 0.0;
       for (int j = -r; j <= r; ++j)
         for (int i = -r; i <= r; ++i)

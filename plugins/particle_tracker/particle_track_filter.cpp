@@ -177,25 +177,4 @@ void ParticleTrackFilter::moments(State& mean, Covariance& cov) const {
   }
 }
 
-PredictedMeasurement ParticleTrackFilter::predicted_measurement() const {
-  State mean;
-  Covariance cov;
-  moments(mean, cov);
-  return {mean.head<3>(), cov.topLeftCorner<3, 3>() + options_.r * Eigen::Matrix3d::Identity()};
-}
-
-Eigen::VectorXd ParticleTrackFilter::state() const {
-  State mean;
-  Covariance cov;
-  moments(mean, cov);
-  return mean;
-}
-
-Eigen::MatrixXd ParticleTrackFilter::covariance() const {
-  State mean;
-  Covariance cov;
-  moments(mean, cov);
-  return cov;
-}
-
 }  // namespace kestrel::tracking

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "kestrel/tracking/constant_acceleration.hpp"
-#include "kestrel/tracking/filter.hpp"
+#include "kestrel/tracking/moment_filter.hpp"
 
 namespace kestrel::tracking {
 
@@ -32,15 +32,12 @@ using ParticleData = mrpt::bayes::CParticleFilterData<State, mrpt::bayes::partic
 class ParticleTrackFilter final
     : public ParticleData,
       public mrpt::bayes::CParticleFilterDataImpl<ParticleTrackFilter, ParticleData::CParticleList>,
-      public TrackFilter {
+      public MomentTrackFilter {
  public:
   ParticleTrackFilter(const Eigen::Vector3d& first_detection, const ParticleOptions& options, std::uint64_t seed);
 
   void predict(double dt) override;
   void update(const Eigen::Vector3d& z) override;
-  PredictedMeasurement predicted_measurement() const override;
-  Eigen::VectorXd state() const override;
-  Eigen::MatrixXd covariance() const override;
 
  protected:
   // MRPT's hook: weights the (already predicted) particles by the pending detection.
@@ -48,8 +45,10 @@ class ParticleTrackFilter final
       const mrpt::obs::CActionCollection* action, const mrpt::obs::CSensoryFrame* observation,
       const mrpt::bayes::CParticleFilter::TParticleFilterOptions& options) override;
 
+  void moments(State& mean, Covariance& cov) const override;
+  double measurement_noise() const override { return options_.r; }
+
  private:
-  void moments(State& mean, Covariance& cov) const;
   void regularise();
   double largest_exponent(const std::vector<double>& log_likelihood, double remaining) const;
 

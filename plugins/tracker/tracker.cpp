@@ -14,6 +14,7 @@
 // This plugin also provides the components that need no other library.
 #include <kestrel/plugin.hpp>
 #include <kestrel/tracking/deleter.hpp>
+#include <kestrel/tracking/imm_filter.hpp>
 #include <kestrel/tracking/initiator.hpp>
 #include <kestrel/tracking/kalman_filter.hpp>
 #include <kestrel/tracking/selector.hpp>
@@ -67,6 +68,7 @@ KESTREL_REGISTER_NODE(Tracker)
 }  // namespace kestrel::tracking
 
 KESTREL_REGISTER_COMPONENT(kestrel::tracking::Filter, kestrel::tracking::KalmanFilter)
+KESTREL_REGISTER_COMPONENT(kestrel::tracking::Filter, kestrel::tracking::ImmFilter)
 KESTREL_REGISTER_COMPONENT(kestrel::tracking::Initiator, kestrel::tracking::ConsecutiveHitsInitiator)
 KESTREL_REGISTER_COMPONENT(kestrel::tracking::Deleter, kestrel::tracking::ConsecutiveMissesDeleter)
 KESTREL_REGISTER_COMPONENT(kestrel::tracking::Selector, kestrel::tracking::LongestLivingSelector)

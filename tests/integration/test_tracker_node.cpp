@@ -216,10 +216,10 @@ TEST(TrackerNode, OverridesReachIntoComponents) {
   EXPECT_TRUE(unconfirmed.report.at("probe").at("tracks").empty());
   EXPECT_EQ(unconfirmed.report.at("tracker").at("tracks_confirmed"), 0);
   // An unknown component names the known ones.
-  auto bad = build_graph(GraphSource::from_string(yaml, "t.yaml"), host().registry(), {"tracker.filter=imm"});
+  auto bad = build_graph(GraphSource::from_string(yaml, "t.yaml"), host().registry(), {"tracker.filter=ukf"});
   EXPECT_FALSE(bad.graph);
-  EXPECT_THAT(bad.diagnostics.str(), ::testing::HasSubstr("unknown filter 'imm'"));
-  EXPECT_THAT(bad.diagnostics.str(), ::testing::HasSubstr("kalman, particle"));
+  EXPECT_THAT(bad.diagnostics.str(), ::testing::HasSubstr("unknown filter 'ukf'"));
+  EXPECT_THAT(bad.diagnostics.str(), ::testing::HasSubstr("imm, kalman, particle"));
 }
 
 // The deprecated node types take the old flat parameters and build the same tracker, to the last

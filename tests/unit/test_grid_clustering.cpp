@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 #include <random>
 
+#include "camera_rig.hpp"
 #include "clustering.hpp"
 #include "grid_clustering.hpp"
 #include "stereo_matching.hpp"
@@ -94,10 +95,9 @@ TEST(GridClustering, SameClustersAsPclOnRandomClouds) {
 TEST(GridClustering, SameClustersAsPclOnRenderedFrames) {
   // The paper's chain on rendered frames: SGBM, the 0.1 m voxel grid, then both clusterers,
   // with the clutter of trees and poles in view.
-  msg::StereoCalibration calibration;
-  calibration.fx = calibration.fy = sim::focal_from_hfov(640, 92.8);
-  calibration.cx = 319.5;
-  calibration.cy = 239.5;
+  sensors::CameraRigConfig rig;  // the paper's camera, 2 m up, looking along world x
+  rig.hfov_deg = 92.8;
+  const msg::StereoCalibration calibration = rig.calibration();
   sim::SceneOptions scene;
   scene.clutter_count = 30;
   sim::WorldScene world(scene);
@@ -105,7 +105,7 @@ TEST(GridClustering, SameClustersAsPclOnRenderedFrames) {
   stereo::MatcherOptions matcher_options;
   matcher_options.num_disparities = 80;
   const auto matcher = stereo::make_matcher(matcher_options);
-  const auto camera = geometry::level_camera({0, 0, 2}, 0.0);
+  const auto camera = rig.pose(nullptr);
   int frames = 0, paper_clusters = 0, all_clusters = 0;
   for (const double distance : {2.5, 5.0, 7.5}) {
     const intruder::FigureEight path(camera, distance, 1.0, 0.5, 12.0);
