@@ -74,7 +74,7 @@ TEST(Experiments, SweepRunsATableOfCasesWithTheirSeeds) {
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3);  // header + one run per case
   EXPECT_THAT(read(dir / "out" / "sweep.md"), ::testing::HasSubstr("2 cases from " + (dir / "cases.csv").string()));
   EXPECT_TRUE(fs::exists(dir / "out" / "sweep.png"));
-  // Each run got its case's values and seed; an empty cell left the graph's q (1.0).
+  // Each run got its case's values and seed; an empty cell left the graph's q (200).
   const auto first = nlohmann::json::parse(read(dir / "out" / "runs" / "000_seed3" / "report.json")).at("graph");
   const auto second = nlohmann::json::parse(read(dir / "out" / "runs" / "001_seed5" / "report.json")).at("graph");
   EXPECT_EQ(first.at("seed"), 3);
@@ -83,7 +83,7 @@ TEST(Experiments, SweepRunsATableOfCasesWithTheirSeeds) {
     return graph.at("resolved").at("nodes").at("tracker").at("params").at("filter").at("params");
   };
   EXPECT_EQ(filter(first).at("r"), 0.5);
-  EXPECT_EQ(filter(first).at("q"), 1.0);
+  EXPECT_EQ(filter(first).at("q"), 200.0);
   EXPECT_EQ(filter(second).at("r"), 2.0);
   EXPECT_EQ(filter(second).at("q"), 0.5);
   // Every case is checked first, not only the first and the last: the second row's r is out of

@@ -110,7 +110,7 @@ TEST(TrackingScenarios, TheYamlAloneSwitchesKalmanAndParticleFilters) {
   EXPECT_EQ(by_particles.report.at("tracking"), particle_graph.report.at("tracking"));
   // And back: the particle graph with the Kalman filter is the Kalman graph.
   const auto back = run_graph_file(KESTREL_SOURCE_DIR "/graphs/paper_tracking_particle.yaml", 1.0,
-                                   {"tracker.filter={type: kalman, r: 0.005}"});
+                                   {"tracker.filter={type: kalman, q: 200}"});
   EXPECT_EQ(back.report.at("tracking"), by_kalman.report.at("tracking"));
 }
 
