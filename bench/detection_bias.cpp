@@ -31,7 +31,9 @@
 #include "camera_rig.hpp"
 #include "clustering.hpp"
 #include "kestrel/evaluation/body_axes.hpp"
+#include "kestrel/geometry/pinhole.hpp"
 #include "object_disparity.hpp"
+#include "sensor_noise.hpp"
 #include "stereo_matching.hpp"
 #include "stereo_renderer.hpp"
 #include "trajectory.hpp"
@@ -59,21 +61,6 @@ struct Budget {
   Spread target, disparity, mask, refined, unrefined;
   int frames = 0, found = 0;
 };
-
-cv::Mat noisy_grey(const cv::Mat& bgr, cv::RNG& rng, double sigma) {
-  cv::Mat grey, noise(bgr.size(), CV_32F), sum, out;
-  cv::cvtColor(bgr, grey, cv::COLOR_BGR2GRAY);
-  rng.fill(noise, cv::RNG::NORMAL, 0.0, sigma);
-  grey.convertTo(sum, CV_32F);
-  sum += noise;
-  sum.convertTo(out, CV_8U);
-  return out;
-}
-
-Eigen::Vector3d at_pixel(const msg::StereoCalibration& c, double u, double v, double disparity) {
-  const double z = c.fx * c.baseline_m / disparity;
-  return {(u - c.cx) * z / c.fx, (v - c.cy) * z / c.fy, z};
-}
 
 // The depth buffer's reading against the true depth. MRPT's linearisation of the buffer is off
 // by a few per cent (5.36 m read for 5.52 m), so the truth is recovered from the ground plane in
@@ -143,7 +130,8 @@ Budget measure(double distance, int frames, int downscale, int supersample, cons
   const auto matcher = stereo::make_matcher(matcher_options);
   const auto camera = rig.pose(nullptr);
   const intruder::FigureEight path(camera, distance, 1.0, 0.5, 12.0);
-  cv::RNG rng(1);
+  sim::SensorNoise camera_noise(1.5, false);  // sim_stereo's defaults
+  std::uint64_t noise_seed = 1;
   world.hide_unplaced_intruders();
   const DepthTruth depth_truth(renderer.render_depth(world.scene(), camera), c, 2.0);
   Budget b;
@@ -172,12 +160,13 @@ Budget measure(double distance, int frames, int downscale, int supersample, cons
       }
     if (n < 10) continue;
     const double true_u = su / n, true_v = sv / n, true_d = sd / n;
-    const Eigen::Vector3d ideal = at_pixel(c, true_u, true_v, true_d);
+    const Eigen::Vector3d ideal = geometry::from_pixel_disparity(c, {true_u, true_v, true_d});
 
     // The chain: noisy grey pair, SGBM (at the downscale), voxels, clusters (the one nearest the
     // drone, within 2 m: coarse depth can be a metre out before refinement), the object's mask
     // and its matched disparity at full resolution.
-    const cv::Mat left = noisy_grey(left_bgr, rng, 1.5), right = noisy_grey(right_bgr, rng, 1.5);
+    const cv::Mat left = camera_noise.apply(left_bgr, noise_seed++),
+                  right = camera_noise.apply(right_bgr, noise_seed++);
     const auto pair = stereo::downscale(left, right, c, downscale);
     const auto cloud =
         stereo::reproject(stereo::compute_disparity(*matcher, pair.left, pair.right), pair.calibration, 0.5, 15.0);
@@ -204,7 +193,7 @@ Budget measure(double distance, int frames, int downscale, int supersample, cons
       cv::imwrite(fmt::format("{}/masks_{:.1f}m_{:02d}.png", dump_dir, distance, i),
                   draw_masks(left, truth_mask, *mask, {true_u, true_v}, chain_c));
     }
-    const Eigen::Vector3d at_true_centroid = at_pixel(c, true_u, true_v, *disparity);
+    const Eigen::Vector3d at_true_centroid = geometry::from_pixel_disparity(c, {true_u, true_v, *disparity});
     b.target.add(ideal - centre);
     b.disparity.add(at_true_centroid - ideal);
     b.mask.add(chain - at_true_centroid);

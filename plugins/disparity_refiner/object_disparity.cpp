@@ -88,7 +88,6 @@ int drop_background(const cv::Mat& left, const cv::Mat& right, ObjectMask& mask,
   const double object = mask.sgbm_disparity;
   const double farthest_behind = object - o.gap_px;
   if (farthest_behind < 0) return 0;  // nothing can be told apart from the object
-  int removed = 0;
   std::vector<cv::Point> drop;
   for (int y = 0; y < mask.pixels.rows; ++y)
     for (int x = 0; x < mask.pixels.cols; ++x) {
@@ -112,9 +111,9 @@ int drop_background(const cv::Mat& left, const cv::Mat& right, ObjectMask& mask,
       }
       if (best_behind < o.ratio * own) drop.emplace_back(x, y);
     }
-  for (const auto& p : drop) mask.pixels.at<std::uint8_t>(p) = 0, ++removed;
-  mask.count -= removed;
-  return removed;
+  for (const auto& p : drop) mask.pixels.at<std::uint8_t>(p) = 0;
+  mask.count -= static_cast<int>(drop.size());
+  return static_cast<int>(drop.size());
 }
 
 std::optional<double> robust_mean_disparity(const ObjectMask& mask) {

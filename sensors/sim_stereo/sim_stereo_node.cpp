@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "camera_rig.hpp"
+#include "sensor_noise.hpp"
 #include "stereo_renderer.hpp"
 #include "world_scene.hpp"
 
@@ -95,8 +96,9 @@ class SimStereo final : public Node {
     msg::StereoFrame frame;
     frame.stamp = stamp;
     frame.frame_index = frames_++;
-    frame.left = finish_image(left, ctx.rng());
-    frame.right = finish_image(right, ctx.rng());
+    // Each image's noise seeded from the node's own stream, so lockstep runs reproduce.
+    frame.left = noise_.apply(left, ctx.rng()());
+    frame.right = noise_.apply(right, ctx.rng()());
     frame.calibration = calibration_;
     ctx.publish(kTruth, std::move(truth));
     ctx.publish(kFrame, std::move(frame));
@@ -105,38 +107,15 @@ class SimStereo final : public Node {
  private:
   SimStereo(NodeInit& init, const SimStereoConfig& cfg)
       : rig_(cfg.rig),
-        noise_sigma_(cfg.noise_sigma),
-        color_(cfg.color),
+        noise_(cfg.noise_sigma, cfg.color),
         scene_(cfg.scene),
         calibration_(rig_.calibration()),
         renderer_(calibration_, static_cast<int>(cfg.supersample)) {
     init.set_rate(rig_.fps);
   }
 
-  // Grey (unless colour was asked for), plus sensor noise from the node's seeded generator.
-  cv::Mat finish_image(const cv::Mat& bgr, std::mt19937_64& rng) {
-    cv::Mat image;
-    if (color_)
-      image = bgr;
-    else
-      cv::cvtColor(bgr, image, cv::COLOR_BGR2GRAY);
-    if (noise_sigma_ <= 0) return image;
-    // OpenCV's generator (multiply-with-carry, Ziggurat normals), seeded from the node's own
-    // stream: a fifth of the time of std::normal_distribution, and as reproducible.
-    cv::RNG generator(rng());
-    noise_.create(image.size(), CV_32FC(image.channels()));
-    generator.fill(noise_, cv::RNG::NORMAL, 0.0, noise_sigma_);
-    image.convertTo(sum_, noise_.type());
-    sum_ += noise_;
-    cv::Mat noisy;
-    sum_.convertTo(noisy, image.type());  // rounded and saturated, as a sensor's converter does
-    return noisy;
-  }
-
   sensors::CameraRigConfig rig_;
-  double noise_sigma_;
-  cv::Mat noise_, sum_;  // working buffers, kept from frame to frame
-  bool color_;
+  SensorNoise noise_;
   WorldScene scene_;
   msg::StereoCalibration calibration_;
   StereoRenderer renderer_;
