@@ -6,6 +6,7 @@
 #include <kestrel/plugin.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "foreground_mask.hpp"
 #include "stereo_matching.hpp"
 
 namespace kestrel::stereo {
@@ -25,6 +26,7 @@ class StereoDepth final : public Node {
 
   struct Config {
     MatcherOptions matcher;
+    ForegroundOptions foreground;
     double min_depth_m = 0.5;  // the oCamS's range: 0.5 to 15 m
     double max_depth_m = 15.0;
     int pixel_step = 1;
@@ -95,6 +97,39 @@ class StereoDepth final : public Node {
             "match on images shrunk by this factor (num_disparities is divided by it too): faster, coarser depth. "
             "With a disparity_refiner after the clusters this is coarse-to-fine: the objects are found at low "
             "resolution and their disparity measured at full resolution");
+    c.param("foreground_gap_m", &Config::foreground, &ForegroundOptions::gap_m)
+        .range(0.0, 100.0)
+        .with_unit("m")
+        .describe(
+            "keep only points that stand at least this far in front of what is above and below them, and of what "
+            "is left and right of them (top-hats of the disparity), which cuts an intruder from the trees behind "
+            "it; 0 keeps every point (the paper)");
+    c.param("foreground_min_step_px", &Config::foreground, &ForegroundOptions::min_step_px)
+        .range(0.0, 100.0)
+        .with_unit("px")
+        .describe(
+            "foreground: and at least this much nearer in disparity, so that matching's noise on a distant surface "
+            "does not stand out (at fx = 304 px and b = 0.12 m, a 0.5 m step in depth at 4.5 m is 0.8 px)");
+    c.param("foreground_max_height_m", &Config::foreground, &ForegroundOptions::max_height_m)
+        .range(0.01, 100.0)
+        .with_unit("m")
+        .describe("foreground: the tallest object that can stand out; taller ones (trunks, walls) are background");
+    c.param("foreground_max_width_m", &Config::foreground, &ForegroundOptions::max_width_m)
+        .range(0.01, 100.0)
+        .with_unit("m")
+        .describe("foreground: the widest object that can stand out; wider ones (canopies, walls) are background");
+    c.param("foreground_min_thickness_px", &Config::foreground, &ForegroundOptions::min_thickness_px)
+        .range(1, 31)
+        .with_unit("px")
+        .describe(
+            "foreground: parts thinner than this (slivers that matching leaves along the edges of trees) are taken "
+            "out by an opening of the mask; 1 keeps them");
+    c.param("foreground_max_hole_px", &Config::foreground, &ForegroundOptions::max_hole_px)
+        .range(0, 1000)
+        .with_unit("px")
+        .describe(
+            "foreground: runs of unmatched pixels up to this long between matched ones are holes in a surface, "
+            "not a view through it (longer runs, such as the sky, count as far); 0 counts every one as far");
     c.param("snapshot_frame", &Config::snapshot_frame)
         .at_least(-1)
         .describe("frame index saved as PNG with --report; -1 = none");
@@ -142,13 +177,18 @@ class StereoDepth final : public Node {
     msg::PointCloud cloud;
     cloud.stamp = frame->stamp;
     cloud.frame = "camera";
-    cloud.points = reproject(disparity, pair.calibration, cfg_.min_depth_m, cfg_.max_depth_m, cfg_.pixel_step);
+    const cv::Mat foreground =
+        cfg_.foreground.gap_m > 0.0 ? foreground_mask(disparity, pair.calibration, cfg_.foreground) : cv::Mat();
+    cloud.points =
+        reproject(disparity, pair.calibration, cfg_.min_depth_m, cfg_.max_depth_m, cfg_.pixel_step, foreground);
     cloud.pixels_per_point = cfg_.downscale * cfg_.pixel_step;
     if (static_cast<std::int64_t>(frame->frame_index) == cfg_.snapshot_frame && ctx.keeps_artifacts()) {
       ctx.add_artifact("left.png", encode_png(frame->left), "left image");
       ctx.add_artifact("right.png", encode_png(frame->right), "right image");
       ctx.add_artifact("disparity.png", encode_png(colourise_disparity(disparity, num_disparities_)),
                        "disparity (near is warm)");
+      if (!foreground.empty())
+        ctx.add_artifact("foreground.png", encode_png(foreground), "foreground: what stands in front of its background");
     }
     ctx.publish(kCloud, std::move(cloud));
   }

@@ -54,8 +54,9 @@ cv::Mat compute_disparity(cv::StereoMatcher& matcher, const cv::Mat& left, const
 }
 
 pcl::PointCloud<pcl::PointXYZ>::Ptr reproject(const cv::Mat& disparity16, const msg::StereoCalibration& c,
-                                              double min_depth, double max_depth, int step) {
+                                              double min_depth, double max_depth, int step, const cv::Mat& mask) {
   CV_Assert(disparity16.type() == CV_16S);
+  CV_Assert(mask.empty() || (mask.type() == CV_8U && mask.size() == disparity16.size()));
   auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   const double fb = c.fx * c.baseline_m;
   // Valid disparities for the depth range: Z = f b / d.
@@ -63,8 +64,10 @@ pcl::PointCloud<pcl::PointXYZ>::Ptr reproject(const cv::Mat& disparity16, const 
   cloud->reserve(static_cast<std::size_t>(disparity16.total() / static_cast<std::size_t>(step * step) / 2));
   for (int v = 0; v < disparity16.rows; v += step) {
     const short* row = disparity16.ptr<short>(v);
+    const std::uint8_t* keep = mask.empty() ? nullptr : mask.ptr<std::uint8_t>(v);
     for (int u = 0; u < disparity16.cols; u += step) {
       if (row[u] <= 0) continue;  // invalid (OpenCV marks them (min_disparity - 1) * 16)
+      if (keep && !keep[u]) continue;
       const double d = row[u] / 16.0;
       if (d < d_min || d > d_max) continue;
       const double scale = c.baseline_m / d;

@@ -36,8 +36,10 @@ cv::Mat compute_disparity(cv::StereoMatcher& matcher, const cv::Mat& left, const
 /// Equation (1): for each valid disparity d (pixels) at (u, v),
 ///   [X Y Z] = b / d * [u - cx, v - cy, f],
 /// kept if min_depth <= Z <= max_depth. `step` samples every step-th pixel in each direction.
+/// A non-empty CV_8U `mask` keeps only its non-zero pixels.
 pcl::PointCloud<pcl::PointXYZ>::Ptr reproject(const cv::Mat& disparity16, const msg::StereoCalibration& calibration,
-                                              double min_depth, double max_depth, int step = 1);
+                                              double min_depth, double max_depth, int step = 1,
+                                              const cv::Mat& mask = {});
 
 /// The pair and its calibration shrunk by an integer factor (area averaging), so that matching
 /// runs on factor^2 fewer pixels with factor times fewer disparities.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace kestrel::sim {
 
@@ -32,20 +33,27 @@ void add_quad(mrpt::opengl::CSetOfTexturedTriangles& mesh, const Eigen::Vector3d
 }  // namespace
 
 void add_box(mrpt::opengl::CSetOfTexturedTriangles& mesh, const Eigen::Vector3d& centre, const Eigen::Vector3d& size,
-             const Eigen::Matrix3d& rotation, bool inward) {
+             const Eigen::Matrix3d& rotation, bool inward, double tile) {
   const Eigen::Vector3d h = size / 2.0;
+  // Texture repeats across a face of extents a x b.
+  const auto repeats = [tile](double a, double b) {
+    return tile > 0.0 ? std::pair{static_cast<float>(a / tile), static_cast<float>(b / tile)} : std::pair{1.0f, 1.0f};
+  };
+  const auto [xu, xv] = repeats(size.y(), size.z());
+  const auto [yu, yv] = repeats(size.x(), size.z());
+  const auto [zu, zv] = repeats(size.x(), size.y());
   // Mirroring y reverses every face's winding, so the faces look inward.
   const double mirror = inward ? -1.0 : 1.0;
   auto corner = [&](double sx, double sy, double sz) {
     return Eigen::Vector3d(centre + rotation * Eigen::Vector3d(sx * h.x(), mirror * sy * h.y(), sz * h.z()));
   };
   // Faces: +x, -x, +y, -y, +z, -z (corners counter-clockwise seen from outside).
-  add_quad(mesh, corner(1, -1, -1), corner(1, 1, -1), corner(1, 1, 1), corner(1, -1, 1), 1.0f, 1.0f);
-  add_quad(mesh, corner(-1, 1, -1), corner(-1, -1, -1), corner(-1, -1, 1), corner(-1, 1, 1), 1.0f, 1.0f);
-  add_quad(mesh, corner(1, 1, -1), corner(-1, 1, -1), corner(-1, 1, 1), corner(1, 1, 1), 1.0f, 1.0f);
-  add_quad(mesh, corner(-1, -1, -1), corner(1, -1, -1), corner(1, -1, 1), corner(-1, -1, 1), 1.0f, 1.0f);
-  add_quad(mesh, corner(-1, -1, 1), corner(1, -1, 1), corner(1, 1, 1), corner(-1, 1, 1), 1.0f, 1.0f);
-  add_quad(mesh, corner(-1, 1, -1), corner(1, 1, -1), corner(1, -1, -1), corner(-1, -1, -1), 1.0f, 1.0f);
+  add_quad(mesh, corner(1, -1, -1), corner(1, 1, -1), corner(1, 1, 1), corner(1, -1, 1), xu, xv);
+  add_quad(mesh, corner(-1, 1, -1), corner(-1, -1, -1), corner(-1, -1, 1), corner(-1, 1, 1), xu, xv);
+  add_quad(mesh, corner(1, 1, -1), corner(-1, 1, -1), corner(-1, 1, 1), corner(1, 1, 1), yu, yv);
+  add_quad(mesh, corner(-1, -1, -1), corner(1, -1, -1), corner(1, -1, 1), corner(-1, -1, 1), yu, yv);
+  add_quad(mesh, corner(-1, -1, 1), corner(1, -1, 1), corner(1, 1, 1), corner(-1, 1, 1), zu, zv);
+  add_quad(mesh, corner(-1, 1, -1), corner(1, 1, -1), corner(1, -1, -1), corner(-1, -1, -1), zu, zv);
 }
 
 void add_disc(mrpt::opengl::CSetOfTexturedTriangles& mesh, const Eigen::Vector3d& centre, double radius,

@@ -9,10 +9,11 @@
 namespace kestrel::sim {
 
 /// Adds a box of `size` (x, y, z extents) centred at `centre`, rotated by `rotation`. Each face
-/// carries the whole texture once (texture coordinates stay in [0, 1]).
+/// carries the whole texture once (texture coordinates stay in [0, 1]), or, with `tile` > 0, the
+/// texture repeats every `tile` metres, so that its detail has the same size on every box.
 /// `inward` turns the faces to be seen from inside (a sky box).
 void add_box(mrpt::opengl::CSetOfTexturedTriangles& mesh, const Eigen::Vector3d& centre, const Eigen::Vector3d& size,
-             const Eigen::Matrix3d& rotation = Eigen::Matrix3d::Identity(), bool inward = false);
+             const Eigen::Matrix3d& rotation = Eigen::Matrix3d::Identity(), bool inward = false, double tile = 0.0);
 
 /// Adds a flat disc (a prism with `sides` faces) of `radius` and `thickness`, axis along z.
 void add_disc(mrpt::opengl::CSetOfTexturedTriangles& mesh, const Eigen::Vector3d& centre, double radius,

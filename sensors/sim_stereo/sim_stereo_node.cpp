@@ -1,6 +1,8 @@
 // The `sim_stereo` node: a simulated stereo camera that renders the world with MRPT's off-screen
 // EGL renderer. Defaults are the WithRobot oCamS-1CGN-U at 640x480.
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <kestrel/geometry/frames.hpp>
 #include <kestrel/messages/ground_truth.hpp>
 #include <kestrel/messages/stereo_frame.hpp>
@@ -45,19 +47,38 @@ class SimStereo final : public Node {
     c.param("clutter_count", &C::scene, &SceneOptions::clutter_count)
         .range(0, 500)
         .describe("trees and buildings in the background");
+    c.choice("clutter_layout", &C::scene, &SceneOptions::clutter_layout,
+             {{"scattered", ClutterLayout::scattered}, {"band", ClutterLayout::band}})
+        .describe(
+            "scattered: between clutter_min_range_m and clutter_max_range_m of the world origin, where it can hide an "
+            "intruder; band: between clutter_band_near_m and clutter_band_far_m in front of the camera, across its "
+            "view, so an intruder nearer than the band is seen against it and never hidden");
+    c.param("clutter_tree_fraction", &C::scene, &SceneOptions::clutter_tree_fraction)
+        .range(0.0, 1.0)
+        .describe("share of the clutter that is trees (trunk and canopy); the rest are buildings");
     c.param("clutter_min_range_m", &C::scene, &SceneOptions::clutter_min_range_m)
         .range(0.0, 500.0)
         .with_unit("m")
-        .describe("clutter's nearest distance from the world origin");
+        .describe("scattered: clutter's nearest distance from the world origin");
     c.param("clutter_max_range_m", &C::scene, &SceneOptions::clutter_max_range_m)
         .range(0.0, 500.0)
         .with_unit("m")
-        .describe("clutter's farthest distance");
+        .describe("scattered: clutter's farthest distance");
+    c.param("clutter_band_near_m", &C::scene, &SceneOptions::clutter_band_near_m)
+        .range(0.0, 500.0)
+        .with_unit("m")
+        .describe("band: nearest depth of the clutter's footprint in front of the camera's fixed pose");
+    c.param("clutter_band_far_m", &C::scene, &SceneOptions::clutter_band_far_m)
+        .range(0.0, 500.0)
+        .with_unit("m")
+        .describe("band: farthest depth");
     c.param("scene_seed", &C::scene, &SceneOptions::seed)
         .at_least(0)
         .describe("lays out the world and its textures; the run seed drives the noise");
     c.rule("clutter_min_range_m <= clutter_max_range_m", {"clutter_min_range_m", "clutter_max_range_m"},
            [](const C& k) { return k.scene.clutter_min_range_m <= k.scene.clutter_max_range_m; });
+    c.rule("clutter_band_near_m <= clutter_band_far_m", {"clutter_band_near_m", "clutter_band_far_m"},
+           [](const C& k) { return k.scene.clutter_band_near_m <= k.scene.clutter_band_far_m; });
     return NodeSpec("sim_stereo", "Simulated stereo camera: renders rectified image pairs of the world (MRPT, EGL)")
         .details(
             "Renders the left and right images of a textured world (ground, clutter, the intruders as hexacopters) "
@@ -83,6 +104,8 @@ class SimStereo final : public Node {
     truth.stamp = stamp;
     if (const auto intruders = ctx.get(kIntruders)) {
       truth = rig_.seen(*intruders, stamp, camera);
+      if (std::any_of(truth.objects.begin(), truth.objects.end(), [&](const auto& o) { return inside_band(o); }))
+        ++frames_inside_band_;
       for (const auto& o : truth.objects) {
         const double yaw =
             o.velocity_world.head<2>().norm() > 0.1 ? std::atan2(o.velocity_world.y(), o.velocity_world.x()) : 0.0;
@@ -104,22 +127,57 @@ class SimStereo final : public Node {
     ctx.publish(kFrame, std::move(frame));
   }
 
+  void finish(Context& ctx) override {
+    if (!std::isfinite(band_near_m_)) return;
+    // A band meant to stand behind the intruders: say when one flew into or beyond it.
+    ctx.set_report_section(ctx.id(), {{"frames_with_intruder_in_clutter_band", frames_inside_band_}},
+                           fmt::format("Clutter in a band from {:.2f} m: {} frames had an intruder at or beyond "
+                                       "its near edge, where clutter can hide it.\n",
+                                       band_near_m_, frames_inside_band_));
+    ctx.describe_quantity(ctx.id() + ".frames_with_intruder_in_clutter_band");
+    if (frames_inside_band_ > 0)
+      ctx.log().warn("{} frames had an intruder at or beyond the clutter band's near edge ({:.2f} m)",
+                     frames_inside_band_, band_near_m_);
+  }
+
  private:
   SimStereo(NodeInit& init, const SimStereoConfig& cfg)
       : rig_(cfg.rig),
         noise_(cfg.noise_sigma, cfg.color),
-        scene_(cfg.scene),
+        scene_(scene_options(cfg)),
+        band_near_m_(cfg.scene.clutter_layout == ClutterLayout::band && cfg.scene.clutter_count > 0
+                         ? cfg.scene.clutter_band_near_m
+                         : std::numeric_limits<double>::infinity()),
         calibration_(rig_.calibration()),
         renderer_(calibration_, static_cast<int>(cfg.supersample)) {
     init.set_rate(rig_.fps);
   }
 
+  // The band is laid out in front of the camera's fixed pose (camera_position_m, camera_yaw_deg).
+  static SceneOptions scene_options(const SimStereoConfig& cfg) {
+    SceneOptions scene = cfg.scene;
+    const msg::StereoCalibration calibration = cfg.rig.calibration();
+    scene.band_view.camera_position = cfg.rig.camera_position_m;
+    scene.band_view.camera_yaw_rad = cfg.rig.camera_yaw_deg * M_PI / 180.0;
+    scene.band_view.half_fov_rad = std::atan2(0.5 * calibration.width, calibration.fx);
+    return scene;
+  }
+
+  // Depth of an intruder along the fixed camera's axis, against the band's near edge.
+  bool inside_band(const msg::GroundTruthObject& o) const {
+    const double yaw = rig_.camera_yaw_deg * M_PI / 180.0;
+    const Eigen::Vector3d axis(std::cos(yaw), std::sin(yaw), 0.0);
+    return o.in_view && (o.position_world - rig_.camera_position_m).dot(axis) >= band_near_m_;
+  }
+
   sensors::CameraRigConfig rig_;
   SensorNoise noise_;
   WorldScene scene_;
+  double band_near_m_;
   msg::StereoCalibration calibration_;
   StereoRenderer renderer_;
   std::uint64_t frames_ = 0;
+  std::uint64_t frames_inside_band_ = 0;
 };
 KESTREL_REGISTER_NODE(SimStereo)
 

@@ -13,6 +13,10 @@
 namespace kestrel::sim {
 
 namespace {
+// Metres over which each clutter texture repeats: its detail keeps the size it has on the ground
+// (a texture stretched over a whole canopy blurs to a flat grey that stereo cannot match).
+constexpr double kBarkTile = 1.0, kFoliageTile = 2.0, kWallTile = 3.0;
+
 mrpt::opengl::CSetOfTexturedTriangles::Ptr textured(const TextureStyle& style, std::uint64_t seed, int size = 256) {
   auto mesh = mrpt::opengl::CSetOfTexturedTriangles::Create();
   mesh->assignImage(mrpt::img::CImage(make_texture(size, style, seed), mrpt::img::DEEP_COPY));
@@ -48,30 +52,55 @@ WorldScene::WorldScene(const SceneOptions& options)
 void WorldScene::add_clutter(const SceneOptions& options) {
   if (options.clutter_count <= 0) return;
   std::mt19937_64 rng(seed_ * 7 + 2);
-  std::uniform_real_distribution<double> range(options.clutter_min_range_m, options.clutter_max_range_m);
-  std::uniform_real_distribution<double> bearing(-options.clutter_bearing_deg, options.clutter_bearing_deg);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   auto trunks = textured(bark_style(), seed_ * 7 + 3, 128);
   auto canopies = textured(foliage_style(), seed_ * 7 + 4);
   auto buildings = textured(concrete_style(), seed_ * 7 + 5);
   for (int i = 0; i < options.clutter_count; ++i) {
-    const double r = range(rng), b = bearing(rng) * M_PI / 180.0;
-    const Eigen::Vector3d at(r * std::cos(b), r * std::sin(b), 0.0);
+    // Two draws place it, once its size is known.
+    const double place_a = unit(rng), place_b = unit(rng);
     const Eigen::Matrix3d yaw = Eigen::AngleAxisd(unit(rng) * M_PI, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-    if (unit(rng) < 0.65) {  // a tree: trunk and canopy
+    if (unit(rng) < options.clutter_tree_fraction) {  // a tree: trunk and canopy
       const double height = 3.0 + 4.0 * unit(rng);
       const double width = 1.8 + 2.0 * unit(rng);
-      add_box(*trunks, at + Eigen::Vector3d(0, 0, height * 0.3), {0.35, 0.35, height * 0.6}, yaw);
-      add_box(*canopies, at + Eigen::Vector3d(0, 0, height * 0.7), {width, width, height * 0.6}, yaw);
+      const double radius = width * M_SQRT1_2;
+      const Eigen::Vector3d at = clutter_site(options, place_a, place_b, radius);
+      add_box(*trunks, at + Eigen::Vector3d(0, 0, height * 0.3), {0.35, 0.35, height * 0.6}, yaw, false, kBarkTile);
+      add_box(*canopies, at + Eigen::Vector3d(0, 0, height * 0.7), {width, width, height * 0.6}, yaw, false,
+              kFoliageTile);
+      clutter_.push_back(at);
+      clutter_radii_.push_back(radius);
     } else {  // a building
       const Eigen::Vector3d size(3.0 + 6.0 * unit(rng), 3.0 + 6.0 * unit(rng), 3.0 + 5.0 * unit(rng));
-      add_box(*buildings, at + Eigen::Vector3d(0, 0, size.z() / 2), size, yaw);
+      const double radius = size.head<2>().norm() / 2.0;
+      const Eigen::Vector3d at = clutter_site(options, place_a, place_b, radius);
+      add_box(*buildings, at + Eigen::Vector3d(0, 0, size.z() / 2), size, yaw, false, kWallTile);
+      clutter_.push_back(at);
+      clutter_radii_.push_back(radius);
     }
-    clutter_.push_back(at);
   }
   scene_->insert(trunks);
   scene_->insert(canopies);
   scene_->insert(buildings);
+}
+
+Eigen::Vector3d WorldScene::clutter_site(const SceneOptions& options, double a, double b, double radius) {
+  if (options.clutter_layout == ClutterLayout::scattered) {
+    // As std::uniform_real_distribution maps a and b onto the ranges.
+    const double r = a * (options.clutter_max_range_m - options.clutter_min_range_m) + options.clutter_min_range_m;
+    const double bearing = b * (2.0 * options.clutter_bearing_deg) - options.clutter_bearing_deg;
+    return {r * std::cos(bearing * M_PI / 180.0), r * std::sin(bearing * M_PI / 180.0), 0.0};
+  }
+  // The band: the object's nearest point at a depth in the band (its centre a footprint radius
+  // behind that), then a lateral offset that keeps it in view at that depth, with a metre to
+  // spare so that the picture's edges are covered too.
+  const ClutterBandView& view = options.band_view;
+  const double depth =
+      options.clutter_band_near_m + a * (options.clutter_band_far_m - options.clutter_band_near_m) + radius;
+  const double half_width = depth * std::tan(view.half_fov_rad) + 1.0;
+  const double lateral = (2.0 * b - 1.0) * half_width;
+  const double c = std::cos(view.camera_yaw_rad), s = std::sin(view.camera_yaw_rad);
+  return {view.camera_position.x() + depth * c - lateral * s, view.camera_position.y() + depth * s + lateral * c, 0.0};
 }
 
 void WorldScene::set_intruder(std::uint64_t id, const Eigen::Vector3d& position, double yaw) {

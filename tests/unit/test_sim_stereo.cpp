@@ -85,3 +85,28 @@ TEST(SimStereo, ClutterStaysInItsRing) {
     EXPECT_LE(std::abs(std::atan2(p.y(), p.x())), options.clutter_bearing_deg * M_PI / 180.0 + 1e-9);
   }
 }
+
+TEST(SimStereo, BandClutterStandsWhollyBehindItsNearEdgeAndInView) {
+  SceneOptions options;
+  options.clutter_count = 40;
+  options.clutter_layout = ClutterLayout::band;
+  options.clutter_band_near_m = 6.0;
+  options.clutter_band_far_m = 8.0;
+  options.band_view.camera_position = {1.0, -2.0, 2.0};
+  options.band_view.camera_yaw_rad = 0.5;
+  options.band_view.half_fov_rad = 0.8;
+  const WorldScene world(options);
+  ASSERT_EQ(world.clutter_positions().size(), 40u);
+  const Eigen::Vector2d axis(std::cos(0.5), std::sin(0.5)), side(-std::sin(0.5), std::cos(0.5));
+  double widest = 0.0;
+  for (std::size_t i = 0; i < world.clutter_positions().size(); ++i) {
+    const Eigen::Vector2d rel = world.clutter_positions()[i].head<2>() - options.band_view.camera_position.head<2>();
+    const double depth = rel.dot(axis), lateral = rel.dot(side);
+    const double nearest = depth - world.clutter_footprint_radii()[i];  // no part of it nearer than the band
+    EXPECT_GE(nearest, 6.0 - 1e-9);
+    EXPECT_LE(nearest, 8.0 + 1e-9);
+    EXPECT_LE(std::abs(lateral), depth * std::tan(0.8) + 1.0 + 1e-9);  // in view, a metre to spare
+    widest = std::max(widest, std::abs(lateral));
+  }
+  EXPECT_GT(widest, 4.0);  // spread across the view, not bunched on the axis
+}

@@ -1,0 +1,152 @@
+#include "foreground_mask.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <opencv2/imgproc.hpp>
+#include <vector>
+
+namespace kestrel::stereo {
+
+namespace {
+
+template <class Op>
+cv::Mat vertical_running(const cv::Mat& image, int radius, float identity, Op op) {
+  CV_Assert(image.type() == CV_32F && radius >= 0);
+  const int rows = image.rows, cols = image.cols, k = 2 * radius + 1;
+  if (radius == 0 || rows == 0) return image.clone();
+  // Padded with the identity by `radius` rows above and enough below for whole blocks of k rows.
+  const int padded_rows = (rows + 2 * radius + k - 1) / k * k;
+  cv::Mat padded(padded_rows, cols, CV_32F, cv::Scalar(identity));
+  image.copyTo(padded.rowRange(radius, radius + rows));
+  cv::Mat prefix(padded_rows, cols, CV_32F), suffix(padded_rows, cols, CV_32F);
+  for (int start = 0; start < padded_rows; start += k) {
+    padded.row(start).copyTo(prefix.row(start));
+    for (int v = start + 1; v < start + k; ++v) {
+      const float* in = padded.ptr<float>(v);
+      const float* above = prefix.ptr<float>(v - 1);
+      float* out = prefix.ptr<float>(v);
+      for (int u = 0; u < cols; ++u) out[u] = op(above[u], in[u]);
+    }
+    padded.row(start + k - 1).copyTo(suffix.row(start + k - 1));
+    for (int v = start + k - 2; v >= start; --v) {
+      const float* in = padded.ptr<float>(v);
+      const float* below = suffix.ptr<float>(v + 1);
+      float* out = suffix.ptr<float>(v);
+      for (int u = 0; u < cols; ++u) out[u] = op(below[u], in[u]);
+    }
+  }
+  // Row v of the image is padded row v + radius, the centre of padded rows [v, v + k - 1].
+  cv::Mat result(rows, cols, CV_32F);
+  for (int v = 0; v < rows; ++v) {
+    const float* s = suffix.ptr<float>(v);
+    const float* p = prefix.ptr<float>(v + k - 1);
+    float* out = result.ptr<float>(v);
+    for (int u = 0; u < cols; ++u) out[u] = op(s[u], p[u]);
+  }
+  return result;
+}
+
+}  // namespace
+
+cv::Mat vertical_erode(const cv::Mat& image, int radius) {
+  return vertical_running(image, radius, std::numeric_limits<float>::infinity(),
+                          [](float a, float b) { return std::min(a, b); });
+}
+
+cv::Mat vertical_dilate(const cv::Mat& image, int radius) {
+  return vertical_running(image, radius, -std::numeric_limits<float>::infinity(),
+                          [](float a, float b) { return std::max(a, b); });
+}
+
+void fill_short_holes_down(cv::Mat& disparity, int max_run) {
+  CV_Assert(disparity.type() == CV_32F);
+  for (int u = 0; u < disparity.cols; ++u) {
+    int last_valid = -1;
+    for (int v = 0; v < disparity.rows; ++v) {
+      const float d = disparity.at<float>(v, u);
+      if (d <= 0.0f) continue;
+      const int run = v - last_valid - 1;
+      if (last_valid >= 0 && run > 0 && run <= max_run) {
+        const float fill = std::min(d, disparity.at<float>(last_valid, u));
+        for (int w = last_valid + 1; w < v; ++w) disparity.at<float>(w, u) = fill;
+      }
+      last_valid = v;
+    }
+  }
+}
+
+namespace {
+
+// Openings of `disparity` down its columns at radii 1, 2, 4, ... up to what a pixel of the largest
+// disparity needs, and the radius each disparity needs: an object of size S (along the columns)
+// at disparity d spans S * d * pixels_per_metre_at_unit_disparity pixels, and a window of 2r + 1
+// pixels fits in it no more once 2r + 1 exceeds that.
+struct Openings {
+  double pixels_per_disparity = 0.0;  // per metre of object size, times the size
+  std::vector<int> radii;
+  std::vector<cv::Mat> images;
+
+  Openings(const cv::Mat& disparity, double max_disparity, double pixels_per_disparity_)
+      : pixels_per_disparity(pixels_per_disparity_) {
+    const int largest = std::min(radius_for(max_disparity), disparity.rows);
+    for (int r = 1;; r *= 2) {
+      radii.push_back(std::min(r, largest));
+      images.push_back(vertical_dilate(vertical_erode(disparity, radii.back()), radii.back()));
+      if (r >= largest) break;
+    }
+  }
+  int radius_for(double d) const { return static_cast<int>(std::floor(pixels_per_disparity * d / 2.0)) + 1; }
+  // The opening at (row, col) with the smallest window tall enough for disparity d.
+  float at(int row, int col, float d) const {
+    const int need = radius_for(d);
+    std::size_t scale = 0;
+    while (scale + 1 < radii.size() && radii[scale] < need) ++scale;
+    return images[scale].at<float>(row, col);
+  }
+};
+
+}  // namespace
+
+cv::Mat foreground_mask(const cv::Mat& disparity16, const msg::StereoCalibration& c, const ForegroundOptions& o) {
+  CV_Assert(disparity16.type() == CV_16S);
+  cv::Mat disparity;
+  disparity16.convertTo(disparity, CV_32F, 1.0 / 16.0);
+  disparity.setTo(0.0f, disparity16 <= 0);  // no match (sky): as far as can be
+  // What the openings see: short holes filled down the columns, then along the rows.
+  cv::Mat background = disparity.clone();
+  if (o.max_hole_px > 0) {
+    fill_short_holes_down(background, o.max_hole_px);
+    cv::Mat across = background.t();
+    fill_short_holes_down(across, o.max_hole_px);
+    background = across.t();
+  }
+  double max_disparity = 0.0;
+  cv::minMaxLoc(disparity, nullptr, &max_disparity);
+
+  // Rows: an object H tall at disparity d spans H * fy / Z = H * d * fy / (fx * b) rows; columns:
+  // W * d / b. Columns are opened as the rows of the transposed map.
+  const Openings down(background, max_disparity, o.max_height_m * c.fy / (c.fx * c.baseline_m));
+  const cv::Mat transposed = background.t();
+  const Openings across(transposed, max_disparity, o.max_width_m / c.baseline_m);
+
+  // Standing gap_m in front of a background at depth Z + gap: d - fb / (fb / d + gap).
+  const double fb = c.fx * c.baseline_m;
+  cv::Mat mask(disparity.size(), CV_8U, cv::Scalar(0));
+  for (int v = 0; v < disparity.rows; ++v) {
+    const float* d = disparity.ptr<float>(v);
+    std::uint8_t* m = mask.ptr<std::uint8_t>(v);
+    for (int u = 0; u < disparity.cols; ++u) {
+      if (d[u] <= 0.0f) continue;
+      const double threshold = std::max(o.gap_m * d[u] * d[u] / (fb + o.gap_m * d[u]), o.min_step_px);
+      // In front of what is above and below it, and of what is left and right of it.
+      if (d[u] - down.at(v, u, d[u]) >= threshold && d[u] - across.at(u, v, d[u]) >= threshold) m[u] = 255;
+    }
+  }
+  if (o.min_thickness_px > 1)
+    cv::morphologyEx(mask, mask, cv::MORPH_OPEN,
+                     cv::getStructuringElement(cv::MORPH_RECT, {o.min_thickness_px, o.min_thickness_px}));
+  return mask;
+}
+
+}  // namespace kestrel::stereo
