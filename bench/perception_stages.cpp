@@ -5,6 +5,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "clustering.hpp"
+#include "foreground_mask.hpp"
 #include "stereo_matching.hpp"
 #include "stereo_renderer.hpp"
 #include "trajectory.hpp"
@@ -83,6 +84,24 @@ void BM_StereoDepthStage(benchmark::State& state) {
   state.SetLabel(mode_name(static_cast<int>(state.range(0))));
 }
 BENCHMARK(BM_StereoDepthStage)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// stereo_depth's foreground segmentation (the paper graph's settings) on the frames' disparities.
+void BM_ForegroundMask(benchmark::State& state) {
+  static const auto disparities = [] {
+    const auto matcher = stereo::make_matcher(matcher_options(0));
+    std::vector<cv::Mat> out;
+    for (const auto& [l, r] : frames().pairs) out.push_back(stereo::compute_disparity(*matcher, l, r));
+    return out;
+  }();
+  stereo::ForegroundOptions options;
+  options.gap_m = 0.5;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const cv::Mat mask = stereo::foreground_mask(disparities[i++ % disparities.size()], frames().calibration, options);
+    benchmark::DoNotOptimize(mask.data);
+  }
+}
+BENCHMARK(BM_ForegroundMask)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 std::vector<pcl::PointCloud<pcl::PointXYZ>::Ptr> clouds() {
   const auto matcher = stereo::make_matcher(matcher_options(0));

@@ -78,6 +78,9 @@ void fill_short_holes_down(cv::Mat& disparity, int max_run) {
 
 namespace {
 
+// The background's resolution: columns of the map the openings run on, at most.
+constexpr int kBackgroundWidth = 320;
+
 // Openings of `disparity` down its columns at radii 1, 2, 4, ... up to what a pixel of the largest
 // disparity needs, and the radius each disparity needs: an object of size S (along the columns)
 // at disparity d spans S * d * pixels_per_metre_at_unit_disparity pixels, and a window of 2r + 1
@@ -113,22 +116,29 @@ cv::Mat foreground_mask(const cv::Mat& disparity16, const msg::StereoCalibration
   cv::Mat disparity;
   disparity16.convertTo(disparity, CV_32F, 1.0 / 16.0);
   disparity.setTo(0.0f, disparity16 <= 0);  // no match (sky): as far as can be
-  // What the openings see: short holes filled down the columns, then along the rows.
-  cv::Mat background = disparity.clone();
-  if (o.max_hole_px > 0) {
-    fill_short_holes_down(background, o.max_hole_px);
-    cv::Mat across = background.t();
-    fill_short_holes_down(across, o.max_hole_px);
-    background = across.t();
-  }
   double max_disparity = 0.0;
   cv::minMaxLoc(disparity, nullptr, &max_disparity);
 
+  // What the openings see: the map subsampled to at most kBackgroundWidth columns (the
+  // background needs no finer detail, and the openings cost a quarter at half resolution), short
+  // holes filled down the columns, then along the rows.
+  const int k = std::max(1, disparity.cols / kBackgroundWidth);
+  cv::Mat background;
+  cv::resize(disparity, background, cv::Size((disparity.cols + k - 1) / k, (disparity.rows + k - 1) / k), 0, 0,
+             cv::INTER_NEAREST);
+  if (o.max_hole_px > 0) {
+    const int hole = std::max(1, o.max_hole_px / k);
+    fill_short_holes_down(background, hole);
+    cv::Mat across = background.t();
+    fill_short_holes_down(across, hole);
+    background = across.t();
+  }
+
   // Rows: an object H tall at disparity d spans H * fy / Z = H * d * fy / (fx * b) rows; columns:
-  // W * d / b. Columns are opened as the rows of the transposed map.
-  const Openings down(background, max_disparity, o.max_height_m * c.fy / (c.fx * c.baseline_m));
-  const cv::Mat transposed = background.t();
-  const Openings across(transposed, max_disparity, o.max_width_m / c.baseline_m);
+  // W * d / b; k times fewer in the subsampled map. Columns are opened as the rows of the
+  // transposed map.
+  const Openings down(background, max_disparity, o.max_height_m * c.fy / (c.fx * c.baseline_m) / k);
+  const Openings across(background.t(), max_disparity, o.max_width_m / c.baseline_m / k);
 
   // Standing gap_m in front of a background at depth Z + gap: d - fb / (fb / d + gap).
   const double fb = c.fx * c.baseline_m;
@@ -140,7 +150,8 @@ cv::Mat foreground_mask(const cv::Mat& disparity16, const msg::StereoCalibration
       if (d[u] <= 0.0f) continue;
       const double threshold = std::max(o.gap_m * d[u] * d[u] / (fb + o.gap_m * d[u]), o.min_step_px);
       // In front of what is above and below it, and of what is left and right of it.
-      if (d[u] - down.at(v, u, d[u]) >= threshold && d[u] - across.at(u, v, d[u]) >= threshold) m[u] = 255;
+      if (d[u] - down.at(v / k, u / k, d[u]) >= threshold && d[u] - across.at(u / k, v / k, d[u]) >= threshold)
+        m[u] = 255;
     }
   }
   if (o.min_thickness_px > 1)

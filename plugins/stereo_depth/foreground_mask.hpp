@@ -7,7 +7,8 @@
 // vanish from both openings and stand out, while what is taller (trunks, the ground's slope) or
 // wider (canopies, walls) is its own background in one of them and does not. An intruder in
 // front of a tree a metre behind it is so cut from the tree, which Euclidean clusters at 0.5 m
-// would merge with it.
+// would merge with it. The background is found on the map subsampled to 320 columns or fewer;
+// each pixel is then judged at full resolution against it.
 #include <opencv2/core.hpp>
 
 #include "kestrel/messages/stereo_frame.hpp"

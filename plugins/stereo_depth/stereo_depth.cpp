@@ -109,7 +109,8 @@ class StereoDepth final : public Node {
         .with_unit("px")
         .describe(
             "foreground: and at least this much nearer in disparity, so that matching's noise on a distant surface "
-            "does not stand out (at fx = 304 px and b = 0.12 m, a 0.5 m step in depth at 4.5 m is 0.8 px)");
+            "does not stand out (at fx = 304 px and b = 0.12 m, a 0.5 m step in depth at 4.5 m is 0.8 px); in the "
+            "pixels of the images matched (downscale)");
     c.param("foreground_max_height_m", &Config::foreground, &ForegroundOptions::max_height_m)
         .range(0.01, 100.0)
         .with_unit("m")
@@ -122,14 +123,14 @@ class StereoDepth final : public Node {
         .range(1, 31)
         .with_unit("px")
         .describe(
-            "foreground: parts thinner than this (slivers that matching leaves along the edges of trees) are taken "
-            "out by an opening of the mask; 1 keeps them");
+            "foreground: parts thinner than this, in full-resolution pixels (slivers that matching leaves along the "
+            "edges of trees), are taken out by an opening of the mask; 1 keeps them");
     c.param("foreground_max_hole_px", &Config::foreground, &ForegroundOptions::max_hole_px)
         .range(0, 1000)
         .with_unit("px")
         .describe(
-            "foreground: runs of unmatched pixels up to this long between matched ones are holes in a surface, "
-            "not a view through it (longer runs, such as the sky, count as far); 0 counts every one as far");
+            "foreground: runs of unmatched pixels up to this long (full-resolution pixels) between matched ones are "
+            "holes in a surface, not a view through it (longer runs, such as the sky, count as far); 0 counts every one as far");
     c.param("snapshot_frame", &Config::snapshot_frame)
         .at_least(-1)
         .describe("frame index saved as PNG with --report; -1 = none");
@@ -168,6 +169,12 @@ class StereoDepth final : public Node {
     options.speckle_window_size /= cfg_.downscale * cfg_.downscale;
     num_disparities_ = options.num_disparities;
     matcher_ = make_matcher(options);
+    // Thickness and holes are in full-resolution pixels; the disparity step stays in the matched
+    // image's (matching's noise is a fraction of its own pixels).
+    foreground_ = cfg_.foreground;
+    const auto shrink = [&](int px) { return px > 0 ? std::max(1, (px + cfg_.downscale / 2) / cfg_.downscale) : 0; };
+    foreground_.min_thickness_px = shrink(foreground_.min_thickness_px);
+    foreground_.max_hole_px = shrink(foreground_.max_hole_px);
   }
 
   void process(Context& ctx) override {
@@ -178,7 +185,7 @@ class StereoDepth final : public Node {
     cloud.stamp = frame->stamp;
     cloud.frame = "camera";
     const cv::Mat foreground =
-        cfg_.foreground.gap_m > 0.0 ? foreground_mask(disparity, pair.calibration, cfg_.foreground) : cv::Mat();
+        foreground_.gap_m > 0.0 ? foreground_mask(disparity, pair.calibration, foreground_) : cv::Mat();
     cloud.points =
         reproject(disparity, pair.calibration, cfg_.min_depth_m, cfg_.max_depth_m, cfg_.pixel_step, foreground);
     cloud.pixels_per_point = cfg_.downscale * cfg_.pixel_step;
@@ -196,6 +203,7 @@ class StereoDepth final : public Node {
  private:
   Config cfg_;
   int num_disparities_;  // after downscaling
+  ForegroundOptions foreground_;  // after downscaling
   cv::Ptr<cv::StereoMatcher> matcher_;
 };
 KESTREL_REGISTER_NODE(StereoDepth)
