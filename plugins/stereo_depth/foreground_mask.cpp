@@ -122,10 +122,14 @@ cv::Mat foreground_mask(const cv::Mat& disparity16, const msg::StereoCalibration
   // What the openings see: the map subsampled to at most kBackgroundWidth columns (the
   // background needs no finer detail, and the openings cost a quarter at half resolution), short
   // holes filled down the columns, then along the rows.
-  const int k = std::max(1, disparity.cols / kBackgroundWidth);
+  // The columns on the left that the right camera does not see hold no match at all: they are
+  // outside the picture, not a view of the sky.
+  const int first = std::clamp(o.unseen_left_columns, 0, disparity.cols);
+  if (first == disparity.cols) return cv::Mat(disparity.size(), CV_8U, cv::Scalar(0));
+  const cv::Mat seen = disparity.colRange(first, disparity.cols);
+  const int k = std::max(1, seen.cols / kBackgroundWidth);
   cv::Mat background;
-  cv::resize(disparity, background, cv::Size((disparity.cols + k - 1) / k, (disparity.rows + k - 1) / k), 0, 0,
-             cv::INTER_NEAREST);
+  cv::resize(seen, background, cv::Size((seen.cols + k - 1) / k, (seen.rows + k - 1) / k), 0, 0, cv::INTER_NEAREST);
   if (o.max_hole_px > 0) {
     const int hole = std::max(1, o.max_hole_px / k);
     fill_short_holes_down(background, hole);
@@ -146,12 +150,12 @@ cv::Mat foreground_mask(const cv::Mat& disparity16, const msg::StereoCalibration
   for (int v = 0; v < disparity.rows; ++v) {
     const float* d = disparity.ptr<float>(v);
     std::uint8_t* m = mask.ptr<std::uint8_t>(v);
-    for (int u = 0; u < disparity.cols; ++u) {
+    for (int u = first; u < disparity.cols; ++u) {
       if (d[u] <= 0.0f) continue;
       const double threshold = std::max(o.gap_m * d[u] * d[u] / (fb + o.gap_m * d[u]), o.min_step_px);
       // In front of what is above and below it, and of what is left and right of it.
-      if (d[u] - down.at(v / k, u / k, d[u]) >= threshold && d[u] - across.at(u / k, v / k, d[u]) >= threshold)
-        m[u] = 255;
+      const int col = (u - first) / k, row = v / k;
+      if (d[u] - down.at(row, col, d[u]) >= threshold && d[u] - across.at(col, row, d[u]) >= threshold) m[u] = 255;
     }
   }
   if (o.min_thickness_px > 1)

@@ -22,6 +22,9 @@ struct ForegroundOptions {
   double max_width_m = 1.0;   ///< the widest
   int min_thickness_px = 7;   ///< thinner parts of the mask (slivers along edges) are taken out
   int max_hole_px = 16;       ///< shorter runs without a match, inside a surface, take the surface's depth
+  /// Columns on the left the right camera does not see (the matcher's min_disparity +
+  /// num_disparities): outside the picture, so what touches them is not judged against them.
+  int unseen_left_columns = 0;
 };
 
 /// CV_8U mask of `disparity16` (CV_16S, 1/16 px, <= 0 invalid): 255 where a valid pixel stands

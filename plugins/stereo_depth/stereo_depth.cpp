@@ -175,6 +175,7 @@ class StereoDepth final : public Node {
     const auto shrink = [&](int px) { return px > 0 ? std::max(1, (px + cfg_.downscale / 2) / cfg_.downscale) : 0; };
     foreground_.min_thickness_px = shrink(foreground_.min_thickness_px);
     foreground_.max_hole_px = shrink(foreground_.max_hole_px);
+    foreground_.unseen_left_columns = std::max(0, options.min_disparity + options.num_disparities);
   }
 
   void process(Context& ctx) override {

@@ -146,3 +146,24 @@ TEST(ShortHoles, AreFilledWithTheFartherOfTheirEndsAndLongRunsStay) {
   const cv::Mat expected = (cv::Mat_<float>(10, 1) << 5, 4, 4, 4, 0, 0, 0, 0, 0, 3);
   EXPECT_EQ(cv::norm(column, expected, cv::NORM_INF), 0.0);
 }
+
+TEST(ForegroundMask, TheColumnsTheRightCameraDoesNotSeeAreOutsideThePicture) {
+  // A matcher with 80 disparities leaves the 80 leftmost columns unmatched. A canopy 0.5 m tall at
+  // 6 m, in front of a surface at 10 m, that starts at column 80 and runs 30 columns may go on
+  // beyond the picture: it is not judged against that band.
+  cv::Mat d = surface(10.0);
+  paint(d, {0, 0, 80, 480}, -1.0);
+  paint(d, {80, 200, 30, 25}, 6.0);
+  ForegroundOptions o = options();
+  o.unseen_left_columns = 80;
+  EXPECT_EQ(cv::countNonZero(foreground_mask(d, calibration(), o)), 0);
+  // Taken as a view of the sky, the band makes it an object.
+  o.unseen_left_columns = 0;
+  EXPECT_EQ(cv::countNonZero(foreground_mask(d, calibration(), o)), 30 * 25);
+  // The same piece away from the band is one.
+  cv::Mat away = surface(10.0);
+  paint(away, {0, 0, 80, 480}, -1.0);
+  paint(away, {200, 200, 30, 25}, 6.0);
+  o.unseen_left_columns = 80;
+  EXPECT_EQ(cv::countNonZero(foreground_mask(away, calibration(), o)), 30 * 25);
+}
