@@ -130,7 +130,8 @@ class StereoDepth final : public Node {
         .with_unit("px")
         .describe(
             "foreground: runs of unmatched pixels up to this long (full-resolution pixels) between matched ones are "
-            "holes in a surface, not a view through it (longer runs, such as the sky, count as far); 0 counts every one as far");
+            "holes in a surface, not a view through it (longer runs, such as the sky, count as far); 0 counts every "
+            "one as far");
     c.param("snapshot_frame", &Config::snapshot_frame)
         .at_least(-1)
         .describe("frame index saved as PNG with --report; -1 = none");
@@ -196,14 +197,15 @@ class StereoDepth final : public Node {
       ctx.add_artifact("disparity.png", encode_png(colourise_disparity(disparity, num_disparities_)),
                        "disparity (near is warm)");
       if (!foreground.empty())
-        ctx.add_artifact("foreground.png", encode_png(foreground), "foreground: what stands in front of its background");
+        ctx.add_artifact("foreground.png", encode_png(foreground),
+                         "foreground: what stands in front of its background");
     }
     ctx.publish(kCloud, std::move(cloud));
   }
 
  private:
   Config cfg_;
-  int num_disparities_;  // after downscaling
+  int num_disparities_;           // after downscaling
   ForegroundOptions foreground_;  // after downscaling
   cv::Ptr<cv::StereoMatcher> matcher_;
 };

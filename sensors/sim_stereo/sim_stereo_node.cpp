@@ -2,12 +2,12 @@
 // EGL renderer. Defaults are the WithRobot oCamS-1CGN-U at 640x480.
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <kestrel/geometry/frames.hpp>
 #include <kestrel/messages/ground_truth.hpp>
 #include <kestrel/messages/stereo_frame.hpp>
 #include <kestrel/messages/vehicle_state.hpp>
 #include <kestrel/plugin.hpp>
+#include <limits>
 #include <opencv2/imgproc.hpp>
 
 #include "camera_rig.hpp"

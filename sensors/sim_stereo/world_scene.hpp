@@ -32,7 +32,7 @@ struct SceneOptions {
   int clutter_count = 12;
   ClutterLayout clutter_layout = ClutterLayout::scattered;
   double clutter_tree_fraction = 0.65;  ///< the others are buildings
-  double clutter_min_range_m = 12.0;  ///< scattered: from the world origin
+  double clutter_min_range_m = 12.0;    ///< scattered: from the world origin
   double clutter_max_range_m = 40.0;
   double clutter_bearing_deg = 60.0;  ///< scattered: within +-this of world +x
   double clutter_band_near_m = 6.0;   ///< band: depth of each object's nearest point, in front of the camera

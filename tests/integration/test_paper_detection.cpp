@@ -87,7 +87,7 @@ TEST(PaperDetection, LockstepRunsAreBitIdenticalForASeed) {
 // front of its background (stereo_depth's foreground_gap_m, on in the graph).
 TEST(PaperDetection, HoldsInFrontOfTreesAMetreBehind) {
   const std::vector<std::string> trees = {"intruder.distance_m=5.0",        "camera.clutter_count=16",
-                                          "camera.clutter_layout=band",      "camera.clutter_tree_fraction=1",
+                                          "camera.clutter_layout=band",     "camera.clutter_tree_fraction=1",
                                           "camera.clutter_band_near_m=6.0", "camera.clutter_band_far_m=8.0"};
   const auto r = run_paper_graph(4.0, trees);
   ASSERT_EQ(r.outcome, RunOutcome::completed) << (r.errors.empty() ? "" : r.errors.front());
