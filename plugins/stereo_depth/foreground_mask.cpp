@@ -119,14 +119,14 @@ cv::Mat foreground_mask(const cv::Mat& disparity16, const msg::StereoCalibration
   double max_disparity = 0.0;
   cv::minMaxLoc(disparity, nullptr, &max_disparity);
 
-  // What the openings see: the map subsampled to at most kBackgroundWidth columns (the
-  // background needs no finer detail, and the openings cost a quarter at half resolution), short
-  // holes filled down the columns, then along the rows.
   // The columns on the left that the right camera does not see hold no match at all: they are
   // outside the picture, not a view of the sky.
   const int first = std::clamp(o.unseen_left_columns, 0, disparity.cols);
   if (first == disparity.cols) return cv::Mat(disparity.size(), CV_8U, cv::Scalar(0));
   const cv::Mat seen = disparity.colRange(first, disparity.cols);
+  // What the openings see: the map subsampled to at most kBackgroundWidth columns (the
+  // background needs no finer detail, and the openings cost a quarter at half resolution), short
+  // holes filled down the columns, then along the rows.
   const int k = std::max(1, seen.cols / kBackgroundWidth);
   cv::Mat background;
   cv::resize(seen, background, cv::Size((seen.cols + k - 1) / k, (seen.rows + k - 1) / k), 0, 0, cv::INTER_NEAREST);

@@ -28,7 +28,8 @@ struct ForegroundOptions {
 };
 
 /// CV_8U mask of `disparity16` (CV_16S, 1/16 px, <= 0 invalid): 255 where a valid pixel stands
-/// gap_m or more in front of the opening of the disparity (invalid counting as infinitely far),
+/// gap_m (and min_step_px) or more in front of both openings of the disparity (invalid counting
+/// as infinitely far, short holes filled, the unseen left columns outside the picture),
 /// then opened by a square of min_thickness_px: the slivers that matching leaves along the edges of
 /// trees go, a solid object's body stays.
 cv::Mat foreground_mask(const cv::Mat& disparity16, const msg::StereoCalibration& calibration,

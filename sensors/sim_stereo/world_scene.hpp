@@ -8,7 +8,6 @@
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <map>
-#include <random>
 
 #include "drone_model.hpp"
 

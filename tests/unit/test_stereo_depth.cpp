@@ -85,6 +85,19 @@ TEST(Reprojection, DepthLimitsAndStep) {
   EXPECT_EQ(reproject(disparity, calibration(), 0.5, 15.0, 2)->size(), 4u);
 }
 
+TEST(Reprojection, AMaskKeepsOnlyItsPixels) {
+  cv::Mat disparity(4, 4, CV_16S, cv::Scalar(16 * 54));
+  cv::Mat mask(4, 4, CV_8U, cv::Scalar(0));
+  mask.at<std::uint8_t>(1, 2) = 255;
+  mask.at<std::uint8_t>(3, 0) = 255;
+  const auto cloud = reproject(disparity, calibration(), 0.5, 15.0, 1, mask);
+  ASSERT_EQ(cloud->size(), 2u);
+  const double z = 452.0 * 0.12 / 54.0;  // (u, v) = (2, 1) first, in row order
+  EXPECT_NEAR((*cloud)[0].x, z * (2 - 320.0) / 452.0, 1e-5);
+  EXPECT_NEAR((*cloud)[0].y, z * (1 - 240.0) / 452.0, 1e-5);
+  EXPECT_NEAR((*cloud)[1].x, z * (0 - 320.0) / 452.0, 1e-5);
+}
+
 class MatcherOnShiftedTexture : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(MatcherOnShiftedTexture, RecoversTheShift) {
