@@ -4,11 +4,6 @@
 # selected-track RMSE that is a real error below the goal's bound and depends on r; the Markdown
 # table beside the paper's figures, and the plot.
 set -euo pipefail
-# Under `make test-asan`: LeakSanitizer's tracer now and then crashes at exit while Mesa's llvmpipe
-# threads are alive ("Tracer caught signal 11", a sanitizer fault, not a leak), and this script
-# runs the rendered chain several times. What is checked here is the script's output; the
-# rendered chain's leaks are checked by the graph tests (tests/graphs).
-export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
 out=$1
 rm -rf "$out"
 scripts/paper-rsweep "$out" --duration 0.3 > /dev/null

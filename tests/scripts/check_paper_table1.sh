@@ -4,11 +4,6 @@
 # RMSE being the camera-frame one on the paper's axes (X = depth = camera z, Y = camera x,
 # Z = camera y), and the table that sets the paper's X/Y/Z beside ours.
 set -euo pipefail
-# Under `make test-asan`: LeakSanitizer's tracer now and then crashes at exit while Mesa's llvmpipe
-# threads are alive ("Tracer caught signal 11", a sanitizer fault, not a leak), and this script
-# runs the rendered chain several times. What is checked here is the script's output; the
-# rendered chain's leaks are checked by the graph tests (tests/graphs).
-export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
 out=$1
 rm -rf "$out"
 scripts/paper-table1 "$out" --duration 0.5 > /dev/null
