@@ -8,6 +8,7 @@
 #include "foreground_mask.hpp"
 #include "stereo_matching.hpp"
 #include "stereo_renderer.hpp"
+#include "striped_matcher.hpp"
 #include "trajectory.hpp"
 #include "voxel_grid.hpp"
 #include "world_scene.hpp"
@@ -72,6 +73,20 @@ void BM_OpenCvMatcherAlone(benchmark::State& state) {
   state.counters["fps"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_OpenCvMatcherAlone)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// SGBM's 5-path mode matched as 1, 2 or 4 strips in parallel (stereo_depth's `strips`; 2 by
+// default), with the node's 48 rows of overlap.
+void BM_StripedSgbm(benchmark::State& state) {
+  stereo::StripedMatcher matcher(matcher_options(0), static_cast<int>(state.range(0)), 48);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const auto& [l, r] = frames().pairs[i++ % frames().pairs.size()];
+    const cv::Mat disparity = matcher.compute(l, r);
+    benchmark::DoNotOptimize(disparity.data);
+  }
+  state.counters["fps"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_StripedSgbm)->Arg(1)->Arg(2)->Arg(4)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_StereoDepthStage(benchmark::State& state) {
   const auto matcher = stereo::make_matcher(matcher_options(static_cast<int>(state.range(0))));

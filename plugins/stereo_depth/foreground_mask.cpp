@@ -127,7 +127,7 @@ cv::Mat foreground_mask(const cv::Mat& disparity16, const msg::StereoCalibration
   // What the openings see: the map subsampled to at most kBackgroundWidth columns (the
   // background needs no finer detail, and the openings cost a quarter at half resolution), short
   // holes filled down the columns, then along the rows.
-  const int k = std::max(1, seen.cols / kBackgroundWidth);
+  const int k = (seen.cols + kBackgroundWidth - 1) / kBackgroundWidth;
   cv::Mat background;
   cv::resize(seen, background, cv::Size((seen.cols + k - 1) / k, (seen.rows + k - 1) / k), 0, 0, cv::INTER_NEAREST);
   if (o.max_hole_px > 0) {

@@ -5,9 +5,11 @@
 #include <kestrel/messages/stereo_frame.hpp>
 #include <kestrel/plugin.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <optional>
 
 #include "foreground_mask.hpp"
 #include "stereo_matching.hpp"
+#include "striped_matcher.hpp"
 
 namespace kestrel::stereo {
 
@@ -31,6 +33,8 @@ class StereoDepth final : public Node {
     double max_depth_m = 15.0;
     int pixel_step = 1;
     int downscale = 1;
+    int strips = 0;  // auto
+    int strip_overlap_px = 48;
     std::int64_t snapshot_frame = 30;
   };
 
@@ -97,6 +101,16 @@ class StereoDepth final : public Node {
             "match on images shrunk by this factor (num_disparities is divided by it too): faster, coarser depth. "
             "With a disparity_refiner after the clusters this is coarse-to-fine: the objects are found at low "
             "resolution and their disparity measured at full resolution");
+    c.param("strips", &Config::strips)
+        .range(0, 16)
+        .describe(
+            "match the pair as this many horizontal strips in parallel (SGBM mode sgbm only; 1 = OpenCV's matcher on "
+            "the whole image; 0 = 2 in mode sgbm, for two cores, else 1): the top strip is exactly the whole image's "
+            "result, the others start strip_overlap_px higher so that SGBM's paths from above reach them");
+    c.param("strip_overlap_px", &Config::strip_overlap_px)
+        .range(0, 1000)
+        .with_unit("px")
+        .describe("rows matched above each strip but the first and then dropped, in full-resolution pixels");
     c.param("foreground_gap_m", &Config::foreground, &ForegroundOptions::gap_m)
         .range(0.0, 100.0)
         .with_unit("m")
@@ -145,6 +159,11 @@ class StereoDepth final : public Node {
            [](const Config& k) { return k.matcher.algorithm != "bm" || k.matcher.block_size >= 5; });
     c.rule("pre_filter_cap <= 63 for algorithm bm", {"pre_filter_cap", "algorithm"},
            [](const Config& k) { return k.matcher.algorithm != "bm" || k.matcher.pre_filter_cap <= 63; });
+    c.rule(
+        "strips > 1 only with algorithm sgbm in mode sgbm (the other modes aggregate from below, or run in "
+        "parallel already)",
+        {"strips", "algorithm", "mode"},
+        [](const Config& k) { return k.strips <= 1 || (k.matcher.algorithm == "sgbm" && k.matcher.mode == "sgbm"); });
     c.rule("p2 > p1 for algorithm sgbm (0 = 8 and 32 * block_size^2)", {"p2", "p1", "block_size", "algorithm"},
            [](const Config& k) {
              const int area = k.matcher.block_size * k.matcher.block_size;
@@ -169,7 +188,9 @@ class StereoDepth final : public Node {
     options.num_disparities = std::max(16, (options.num_disparities / cfg_.downscale + 15) / 16 * 16);
     options.speckle_window_size /= cfg_.downscale * cfg_.downscale;
     num_disparities_ = options.num_disparities;
-    matcher_ = make_matcher(options);
+    const bool sgbm_5_path = options.algorithm == "sgbm" && options.mode == "sgbm";
+    const int strips = cfg_.strips > 0 ? cfg_.strips : (sgbm_5_path ? 2 : 1);
+    matcher_.emplace(options, strips, (cfg_.strip_overlap_px + cfg_.downscale - 1) / cfg_.downscale);
     // Thickness and holes are in full-resolution pixels; the disparity step stays in the matched
     // image's (matching's noise is a fraction of its own pixels).
     foreground_ = cfg_.foreground;
@@ -182,7 +203,7 @@ class StereoDepth final : public Node {
   void process(Context& ctx) override {
     const auto frame = ctx.get(kFrame);
     const ScaledPair pair = downscale(frame->left, frame->right, frame->calibration, cfg_.downscale);
-    const cv::Mat disparity = compute_disparity(*matcher_, pair.left, pair.right);
+    const cv::Mat disparity = matcher_->compute(pair.left, pair.right);
     msg::PointCloud cloud;
     cloud.stamp = frame->stamp;
     cloud.frame = "camera";
@@ -207,7 +228,7 @@ class StereoDepth final : public Node {
   Config cfg_;
   int num_disparities_;           // after downscaling
   ForegroundOptions foreground_;  // after downscaling
-  cv::Ptr<cv::StereoMatcher> matcher_;
+  std::optional<StripedMatcher> matcher_;
 };
 KESTREL_REGISTER_NODE(StereoDepth)
 
