@@ -23,6 +23,15 @@ kestrel_require(Boost libboost-dev 1.74)
 kestrel_require(OpenCV libopencv-dev 4 COMPONENTS core imgproc imgcodecs calib3d videoio)
 # PCL 1.13 makes imported targets (pcl_common, pcl_filters, ...) for these components.
 kestrel_require(PCL libpcl-dev 1.13 COMPONENTS common filters segmentation search kdtree)
+# MCAP recordings: CRC-32, and zstd and LZ4-frame chunk compression.
+kestrel_require(ZLIB zlib1g-dev)
+kestrel_require(zstd libzstd-dev 1.4)
+kestrel_require(PkgConfig pkg-config)
+pkg_check_modules(LZ4 QUIET IMPORTED_TARGET liblz4)
+if(NOT LZ4_FOUND)
+  message(FATAL_ERROR "kestrel needs liblz4 (Debian package liblz4-dev), which was not found. "
+                      "Run `make deps` (scripts/install-deps) to install every dependency, then build again.")
+endif()
 kestrel_require(mrpt-bayes libmrpt-bayes-dev)
 kestrel_require(mrpt-opengl libmrpt-opengl-dev)
 if(KESTREL_BUILD_TESTS)

@@ -4,13 +4,13 @@
 # builds a plugin outside this tree. The layout and the RPATHs are in KestrelLayout.cmake.
 include(CMakePackageConfigHelpers)
 
-set_target_properties(kestrel kestrel_algorithms kestrel_tracking kestrel_vehicle kestrel_plot PROPERTIES INSTALL_RPATH
+set_target_properties(kestrel kestrel_algorithms kestrel_tracking kestrel_vehicle kestrel_plot kestrel_mcap PROPERTIES INSTALL_RPATH
                                                                                   "${KESTREL_LIBRARY_RPATH}")
 
 # Two export sets: kestrelTargets (the runtime, the messages, the algorithms, tracking and vehicle
 # libraries) names no OpenCV, PCL or MRPT target; kestrel::plot draws with OpenCV, so it is the
 # component `plot`, in kestrelPlotTargets.cmake (kestrelConfig.cmake loads both).
-install(TARGETS kestrel kestrel_messages kestrel_algorithms kestrel_tracking kestrel_vehicle EXPORT kestrelTargets
+install(TARGETS kestrel kestrel_messages kestrel_algorithms kestrel_tracking kestrel_vehicle kestrel_mcap EXPORT kestrelTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS kestrel_plot EXPORT kestrelPlotTargets
