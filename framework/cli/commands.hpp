@@ -67,6 +67,12 @@ struct AbArgs {
   int jobs = 0;
 };
 
+struct McapInfoArgs {
+  std::string file;
+  bool json = false;
+  bool verify = false;  // read the whole file and check every CRC
+};
+
 int run_command(const RunArgs& args);
 int sweep_command(const SweepArgs& args);
 int ab_command(const AbArgs& args);
@@ -76,5 +82,6 @@ int validate_command(const GraphArgs& args);
 int dot_command(const GraphArgs& args, const std::string& output);
 int plugins_command();
 int inspect_command(const std::string& name);
+int mcap_info_command(const McapInfoArgs& args);
 
 }  // namespace kestrel::cli

@@ -106,6 +106,14 @@ int main(int argc, char** argv) {
   auto* inspect_cmd = app.add_subcommand("inspect", "Show a node type's ports and parameters (or a component's)");
   inspect_cmd->add_option("type", inspect_name, "node type, component (kind/name or name) or message type")->required();
 
+  auto* mcap_cmd = app.add_subcommand("mcap", "Inspect MCAP recordings")->require_subcommand(1);
+  McapInfoArgs mcap_info;
+  auto* mcap_info_cmd =
+      mcap_cmd->add_subcommand("info", "Channels, schemas, message counts and rates, time range, compression");
+  mcap_info_cmd->add_option("file", mcap_info.file, "MCAP file")->required();
+  mcap_info_cmd->add_flag("--json", mcap_info.json, "print JSON instead of text");
+  mcap_info_cmd->add_flag("--verify", mcap_info.verify, "read the whole file and check every CRC it carries");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -124,5 +132,6 @@ int main(int argc, char** argv) {
   if (*ab_cmd) return ab_command(ab);
   if (*plot_cmd) return plot_command(plot);
   if (*inspect_cmd) return inspect_command(inspect_name);
+  if (*mcap_info_cmd) return mcap_info_command(mcap_info);
   return kUsage;
 }
