@@ -16,7 +16,6 @@ namespace {
 constexpr std::uint64_t kMagicSize = sizeof(kMagic);
 constexpr std::uint64_t kRecordPrefix = 9;                   // opcode and uint64 length
 constexpr std::uint64_t kFooterRecord = kRecordPrefix + 20;  // summary_start, summary_offset_start, crc
-constexpr std::uint64_t kDataEndRecord = kRecordPrefix + 4;
 
 std::string at_byte(std::uint64_t offset) { return " at byte " + std::to_string(offset); }
 
