@@ -4,16 +4,19 @@
 # builds a plugin outside this tree. The layout and the RPATHs are in KestrelLayout.cmake.
 include(CMakePackageConfigHelpers)
 
-set_target_properties(kestrel kestrel_algorithms kestrel_tracking kestrel_vehicle kestrel_plot kestrel_mcap PROPERTIES INSTALL_RPATH
+set_target_properties(kestrel kestrel_algorithms kestrel_tracking kestrel_vehicle kestrel_plot kestrel_mcap kestrel_ros2 kestrel_ros2_messages PROPERTIES INSTALL_RPATH
                                                                                   "${KESTREL_LIBRARY_RPATH}")
 
 # Two export sets: kestrelTargets (the runtime, the messages, the algorithms, tracking and vehicle
 # libraries) names no OpenCV, PCL or MRPT target; kestrel::plot draws with OpenCV, so it is the
 # component `plot`, in kestrelPlotTargets.cmake (kestrelConfig.cmake loads both).
-install(TARGETS kestrel kestrel_messages kestrel_algorithms kestrel_tracking kestrel_vehicle kestrel_mcap EXPORT kestrelTargets
+install(TARGETS kestrel kestrel_messages kestrel_algorithms kestrel_tracking kestrel_vehicle kestrel_mcap kestrel_ros2 EXPORT kestrelTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS kestrel_plot EXPORT kestrelPlotTargets
+        LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(TARGETS kestrel_ros2_messages EXPORT kestrelRos2MessagesTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS kestrel_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
@@ -30,6 +33,7 @@ install(DIRECTORY docs/ DESTINATION "${KESTREL_INSTALL_DATADIR}/docs")
 
 install(EXPORT kestrelTargets NAMESPACE kestrel:: DESTINATION "${KESTREL_INSTALL_CMAKEDIR}")
 install(EXPORT kestrelPlotTargets NAMESPACE kestrel:: DESTINATION "${KESTREL_INSTALL_CMAKEDIR}")
+install(EXPORT kestrelRos2MessagesTargets NAMESPACE kestrel:: DESTINATION "${KESTREL_INSTALL_CMAKEDIR}")
 configure_package_config_file(cmake/kestrelConfig.cmake.in "${CMAKE_BINARY_DIR}/kestrelConfig.cmake"
                               INSTALL_DESTINATION "${KESTREL_INSTALL_CMAKEDIR}")
 write_basic_package_version_file("${CMAKE_BINARY_DIR}/kestrelConfigVersion.cmake" COMPATIBILITY ${KESTREL_PACKAGE_COMPATIBILITY})
@@ -42,4 +46,5 @@ install(FILES "${CMAKE_BINARY_DIR}/kestrelConfig.cmake" "${CMAKE_BINARY_DIR}/kes
 # kestrelConfig.cmake there, and the targets point at the build's libraries and the source headers.
 export(EXPORT kestrelTargets NAMESPACE kestrel:: FILE "${CMAKE_BINARY_DIR}/kestrelTargets.cmake")
 export(EXPORT kestrelPlotTargets NAMESPACE kestrel:: FILE "${CMAKE_BINARY_DIR}/kestrelPlotTargets.cmake")
+export(EXPORT kestrelRos2MessagesTargets NAMESPACE kestrel:: FILE "${CMAKE_BINARY_DIR}/kestrelRos2MessagesTargets.cmake")
 configure_file(cmake/KestrelPlugin.cmake "${CMAKE_BINARY_DIR}/KestrelPlugin.cmake" COPYONLY)

@@ -15,9 +15,15 @@ enum ExitCode : int {
   kNotFound = 4,      // unknown type for inspect, or a plugin was refused
 };
 
+struct GraphFragment {
+  std::string label;  // where its errors point: "--record"
+  std::string yaml;   // a map with `nodes` (and `connections`) added to the graph
+};
+
 struct GraphArgs {
   std::string graph;
   std::vector<std::string> overrides;  // --set node.param=value
+  std::vector<GraphFragment> fragments;
 };
 
 struct RunArgs : GraphArgs {
@@ -27,6 +33,8 @@ struct RunArgs : GraphArgs {
   std::string executor;  // "", "lockstep" or "realtime": overrides the graph's choice
   bool stats = false;
   bool progress = true;
+  std::string record;                 // --record FILE.mcap: a recorder node is added
+  std::optional<std::string> topics;  // --topics PATTERNS for it
 };
 
 struct MotArgs {
@@ -73,6 +81,12 @@ struct McapInfoArgs {
   bool verify = false;  // read the whole file and check every CRC
 };
 
+struct McapCatArgs {
+  std::string file;
+  std::vector<std::string> topics;  // none: every topic
+  std::optional<std::uint64_t> limit;
+};
+
 int run_command(const RunArgs& args);
 int sweep_command(const SweepArgs& args);
 int ab_command(const AbArgs& args);
@@ -83,5 +97,6 @@ int dot_command(const GraphArgs& args, const std::string& output);
 int plugins_command();
 int inspect_command(const std::string& name);
 int mcap_info_command(const McapInfoArgs& args);
+int mcap_cat_command(const McapCatArgs& args);
 
 }  // namespace kestrel::cli

@@ -21,7 +21,7 @@ namespace {
 // Fails early, before hundreds of runs, if the graph or an override is wrong; exits as `kestrel
 // validate` would.
 void check_graph(const std::string& graph, const std::vector<std::string>& overrides) {
-  if (!load_graph({graph, overrides}, "nothing was run").graph)
+  if (!load_graph({graph, overrides, {}}, "nothing was run").graph)
     throw CommandError(kInvalidGraph, graph + " is invalid");
 }
 
@@ -38,7 +38,7 @@ void check_points(const std::string& graph, const SweepPlan& plan) {
   for (std::size_t c = 0; c < plan.grid.size(); ++c) {
     const std::string name = fmt::format("case {} ({}:{})", c, plan.cases_file, plan.case_lines[c]);
     const std::string not_done = name + " is refused; nothing was run";
-    if (!load_graph({graph, plan.sets_for(c)}, not_done.c_str()).graph) {
+    if (!load_graph({graph, plan.sets_for(c), {}}, not_done.c_str()).graph) {
       invalid.push_back(name);
       if (c == 0) break;
     }

@@ -12,7 +12,11 @@ LoadedGraph load_graph(const GraphArgs& args, const char* not_done) {
   loaded.plugins = std::make_unique<PluginHost>();
   loaded.plugins->load_search_path(source.plugin_paths());
   for (const auto& e : loaded.plugins->errors()) spdlog::warn("{}", e.message);
-  BuildResult result = build_graph(source, loaded.plugins->registry(), args.overrides);
+  std::vector<GraphSource> fragments;
+  std::vector<const GraphSource*> fragment_ptrs;
+  for (const auto& f : args.fragments) fragments.push_back(GraphSource::from_string(f.yaml, f.label));
+  for (const auto& f : fragments) fragment_ptrs.push_back(&f);
+  BuildResult result = build_graph(source, loaded.plugins->registry(), args.overrides, fragment_ptrs);
   std::fputs(result.diagnostics.str().c_str(), stderr);
   if (result.diagnostics.has_errors())
     std::fprintf(stderr, "%s: %zu error(s); %s\n", args.graph.c_str(), result.diagnostics.error_count(), not_done);

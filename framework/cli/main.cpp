@@ -32,6 +32,11 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"lockstep", "realtime"}));
   run_cmd->add_flag("--stats", run.stats, "print per-node and per-connection statistics at the end");
   run_cmd->add_flag("!--no-progress", run.progress, "no status line on the terminal");
+  run_cmd->add_option("--record", run.record,
+                      "record the run into FILE.mcap (ROS 2 messages; a `recorder` node is added, docs/recording.md)");
+  run_cmd->add_option("--topics", run.topics,
+                      "what --record records: topic patterns /NODE/PORT, '*' for all, '!PATTERN' to leave out "
+                      "(default: every connection but point clouds)");
 
   GraphArgs validate;
   auto* validate_cmd = app.add_subcommand("validate", "Check a graph and report every problem with file:line:col");
@@ -114,6 +119,13 @@ int main(int argc, char** argv) {
   mcap_info_cmd->add_flag("--json", mcap_info.json, "print JSON instead of text");
   mcap_info_cmd->add_flag("--verify", mcap_info.verify, "read the whole file and check every CRC it carries");
 
+  McapCatArgs mcap_cat;
+  auto* mcap_cat_cmd = mcap_cmd->add_subcommand(
+      "cat", "Print messages as JSON lines: {\"log_time\": NS, \"topic\": T, \"message\": {...}}");
+  mcap_cat_cmd->add_option("file", mcap_cat.file, "MCAP file")->required();
+  mcap_cat_cmd->add_option("--topic", mcap_cat.topics, "only this topic (repeatable; default: every topic)");
+  mcap_cat_cmd->add_option("--limit", mcap_cat.limit, "print at most N messages");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -133,5 +145,6 @@ int main(int argc, char** argv) {
   if (*plot_cmd) return plot_command(plot);
   if (*inspect_cmd) return inspect_command(inspect_name);
   if (*mcap_info_cmd) return mcap_info_command(mcap_info);
+  if (*mcap_cat_cmd) return mcap_cat_command(mcap_cat);
   return kUsage;
 }

@@ -200,7 +200,7 @@ std::uint16_t Writer::add_channel(std::uint16_t schema_id, const std::string& to
 }
 
 void Writer::write_message(std::uint16_t channel_id, Timestamp log_time, Timestamp publish_time,
-                           std::span<const std::uint8_t> data) {
+                           std::span<const std::uint8_t> data, std::optional<std::uint32_t> sequence) {
   State& s = *state_;
   if (s.finished) throw Error("MCAP writer: a message after finish()");
   if (channel_id >= s.channels.size()) throw Error("MCAP writer: no channel " + std::to_string(channel_id));
@@ -217,7 +217,8 @@ void Writer::write_message(std::uint16_t channel_id, Timestamp log_time, Timesta
     s.channel_written[channel_id] = true;
   }
   s.chunk_index[channel_id].emplace_back(log_time, s.chunk_records.size());
-  Message message{channel_id, s.sequences[channel_id]++, log_time, publish_time, {}};
+  const std::uint32_t counted = s.sequences[channel_id]++;
+  Message message{channel_id, sequence.value_or(counted), log_time, publish_time, {}};
   const auto at = w.begin_record(Opcode::message);
   w.u16(message.channel_id);
   w.u32(message.sequence);

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <functional>
@@ -18,6 +19,7 @@
 #include "graph_source.hpp"
 #include "param_checker.hpp"
 #include "param_overrides.hpp"
+#include "tap_selection.hpp"
 #include "yaml_checks.hpp"
 
 namespace kestrel {
@@ -46,7 +48,7 @@ class Builder {
         yaml_(diag_, [this](const YAML::Node& n) { return cur_->at(n); }),
         params_(diag_, yaml_, registry) {}
 
-  BuildResult build(const std::vector<std::string>& overrides);
+  BuildResult build(const std::vector<std::string>& overrides, const std::vector<const GraphSource*>& fragments);
 
  private:
   SourceLocation at(const YAML::Node& n) const { return cur_->at(n); }
@@ -65,6 +67,7 @@ class Builder {
   void check_overrides_name_nodes();
   void read_nodes();
   void read_connections();
+  void connect_taps();
   void check_inputs_connected();
 
   struct Endpoint {
@@ -89,6 +92,7 @@ class Builder {
   std::set<std::pair<int, int>> attempted_inputs_;
   std::set<int> nodes_with_broken_inputs_;
   std::map<std::pair<int, int>, SourceLocation> input_taken_;  // (node, input) -> its connection
+  std::set<std::array<int, 4>> tapped_;                        // (tap node, tap input, node, output)
 };
 
 // Every file's nodes, then every file's connections, so that a graph can connect to the nodes of
@@ -260,7 +264,13 @@ void Builder::read_connections() {
       continue;
     }
     const auto key = std::make_pair(target->node, target->port);
-    if (auto prior = input_taken_.find(key); prior != input_taken_.end()) {
+    if (in_port.tap) {
+      // A tap takes any number of connections, each output once.
+      if (!tapped_.insert({target->node, target->port, source->node, source->port}).second) {
+        error(c, fmt::format("{} is already connected to {}", from.Scalar(), to.Scalar()));
+        continue;
+      }
+    } else if (auto prior = input_taken_.find(key); prior != input_taken_.end()) {
       error(to, fmt::format("input {} is already connected ({}); an input takes one connection", to.Scalar(),
                             earlier(prior->second)));
       continue;
@@ -272,6 +282,49 @@ void Builder::read_connections() {
     config.to_port = target->port;
     g_.connections.push_back(std::move(config));
   }
+}
+
+// Each tap input takes the outputs its topic parameter selects (tap_selection.hpp), in graph
+// order, beside those connected to it by hand. An output counts as connected when it feeds an
+// input that is not a tap.
+void Builder::connect_taps() {
+  std::set<std::pair<int, int>> connected;
+  for (const auto& c : g_.connections) {
+    const auto& in = g_.nodes[static_cast<std::size_t>(c.to_node)].type->spec.inputs();
+    if (!in[static_cast<std::size_t>(c.to_port)].tap) connected.insert({c.from_node, c.from_port});
+  }
+  std::vector<ConnectionConfig> added;
+  for (std::size_t t = 0; t < g_.nodes.size(); ++t) {
+    if (!node_ok_[t]) continue;
+    const NodeConfig& tap_node = g_.nodes[t];
+    const auto& inputs = tap_node.type->spec.inputs();
+    for (std::size_t p = 0; p < inputs.size(); ++p) {
+      if (!inputs[p].tap || !tap_node.params.contains(inputs[p].tap->topics_param)) continue;
+      const TopicSelection selection(tap_node.params.get<std::string>(inputs[p].tap->topics_param),
+                                     inputs[p].tap->skip_types);
+      for (std::size_t n = 0; n < g_.nodes.size(); ++n) {
+        if (n == t || !node_ok_[n]) continue;
+        const auto& outputs = g_.nodes[n].type->spec.outputs();
+        for (std::size_t o = 0; o < outputs.size(); ++o) {
+          const int node = static_cast<int>(n), port = static_cast<int>(o);
+          if (!selection.selects(output_topic(g_.nodes[n].id, outputs[o].name), outputs[o].type(),
+                                 connected.count({node, port}) > 0))
+            continue;
+          if (!tapped_.insert({static_cast<int>(t), static_cast<int>(p), node, port}).second) continue;
+          ConnectionConfig c;
+          c.from_node = node;
+          c.from_port = port;
+          c.to_node = static_cast<int>(t);
+          c.to_port = static_cast<int>(p);
+          c.policy = default_policy_;
+          c.where = tap_node.where;
+          c.label = fmt::format("{}.{} -> {}.{} (tap)", g_.nodes[n].id, outputs[o].name, tap_node.id, inputs[p].name);
+          added.push_back(std::move(c));
+        }
+      }
+    }
+  }
+  for (auto& c : added) g_.connections.push_back(std::move(c));
 }
 
 void Builder::check_inputs_connected() {
@@ -289,9 +342,11 @@ void Builder::check_inputs_connected() {
   }
 }
 
-BuildResult Builder::build(const std::vector<std::string>& overrides) {
+BuildResult Builder::build(const std::vector<std::string>& overrides,
+                           const std::vector<const GraphSource*>& fragments) {
   BuildResult result;
   diag_.append(src_.read_errors);
+  for (const GraphSource* fragment : fragments) diag_.append(fragment->impl().read_errors);
   if (diag_.has_errors()) {
     result.diagnostics = diag_;
     return result;
@@ -323,8 +378,20 @@ BuildResult Builder::build(const std::vector<std::string>& overrides) {
     files_.push_back(&file);
   };
   collect(src_);
+  // Fragments from the command line (`kestrel run --record`) add nodes and connections as an
+  // included file would.
+  for (const GraphSource* fragment : fragments) {
+    const GraphSource::Impl& file = fragment->impl();
+    cur_ = &file;
+    if (!file.root.IsMap())
+      diag_.error(at(file.root), "a graph fragment must be a YAML map with 'nodes' and 'connections'");
+    else if (check_keys(file.root, {"nodes", "connections"}, "a graph fragment"))
+      files_.push_back(&file);
+    cur_ = &src_;
+  }
   read_fragments();
   check_overrides_name_nodes();
+  connect_taps();
   check_inputs_connected();
   if (!diag_.has_errors()) order_nodes(g_, diag_);
   diag_.sort();
@@ -335,12 +402,12 @@ BuildResult Builder::build(const std::vector<std::string>& overrides) {
 
 }  // namespace
 
-BuildResult build_graph(const GraphSource& source, const Registry& registry,
-                        const std::vector<std::string>& overrides) {
+BuildResult build_graph(const GraphSource& source, const Registry& registry, const std::vector<std::string>& overrides,
+                        const std::vector<const GraphSource*>& fragments) {
   Builder builder(source.impl(), registry);
   BuildResult result;
   try {
-    result = builder.build(overrides);
+    result = builder.build(overrides, fragments);
   } catch (const YAML::Exception& e) {
     // The checks above guard every access; this is a last line so that a malformed file can never
     // crash the CLI.

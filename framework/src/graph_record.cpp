@@ -4,6 +4,7 @@
 
 #include "kestrel/params.hpp"
 #include "kestrel/registry.hpp"
+#include "kestrel/version.hpp"
 
 namespace kestrel::detail {
 
@@ -46,6 +47,23 @@ std::string graph_hash(const GraphConfig& graph) {
   std::uint64_t h = 0xcbf29ce484222325ull;
   for (unsigned char c : text) h = (h ^ c) * 0x100000001b3ull;
   return fmt::format("fnv1a64:{:016x}", h);
+}
+
+}  // namespace kestrel::detail
+
+namespace kestrel::detail {
+
+nlohmann::json run_description(const GraphConfig& graph, const RunOptions& options) {
+  const auto duration = options.duration_s ? options.duration_s : graph.duration_s;
+  return {{"kestrel_version", KESTREL_VERSION_STRING},
+          {"graph",
+           {{"file", graph.file.string()},
+            {"name", graph.name},
+            {"executor", graph.executor == ExecutorKind::lockstep ? "lockstep" : "realtime"},
+            {"clock", graph.clock == ClockKind::simulated ? "simulated" : "wall"},
+            {"seed", options.seed.value_or(graph.seed)},
+            {"duration_s", duration ? nlohmann::json(*duration) : nlohmann::json(nullptr)},
+            {"resolved", resolved_graph_json(graph)}}}};
 }
 
 }  // namespace kestrel::detail

@@ -12,7 +12,7 @@ void LockstepExecutor::deliver(Edge& edge, const Envelope& envelope) {
 }
 
 void LockstepExecutor::enqueue(Edge& edge, const Envelope& envelope) {
-  InputSlot& slot = edge.to->inputs[static_cast<std::size_t>(edge.to_port)];
+  InputSlot& slot = edge.to->inputs[static_cast<std::size_t>(edge.to_slot)];
   if (slot.triggers()) {
     edge.push(envelope);
   } else {

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <limits>
 
+#include "graph_record.hpp"
 #include "run_state.hpp"
 
 namespace kestrel {
@@ -53,6 +54,11 @@ std::shared_ptr<void> make_component(const Registry& registry, const std::string
 }  // namespace detail
 
 const Envelope& Context::envelope(std::string_view input) const {
+  // A tap input has a slot per connection: the one that triggered this call comes first.
+  if (rt_.current_trigger >= 0) {
+    const detail::InputSlot& triggered = rt_.inputs[static_cast<std::size_t>(rt_.current_trigger)];
+    if (triggered.spec->name == input) return triggered.current;
+  }
   for (auto& slot : rt_.inputs)
     if (slot.spec->name == input) return slot.current;
   throw Error("node '" + rt_.id() + "' has no input named '" + std::string(input) + "'");
@@ -81,6 +87,7 @@ void Context::describe_metric(const std::string& path, std::string unit, bool hi
 void Context::describe_quantity(const std::string& path, std::string unit) {
   rt_.run->report.describe_metric(rt_.id(), path, MetricMeta{std::move(unit), std::nullopt, false});
 }
+nlohmann::json Context::run_description() const { return detail::run_description(rt_.run->graph, rt_.run->options); }
 bool Context::keeps_artifacts() const { return rt_.run->report.keeps_artifacts(); }
 void Context::add_artifact(const std::string& file_name, std::string_view bytes, std::string caption) {
   rt_.run->report.add_artifact(rt_.id(), file_name, bytes, std::move(caption));
@@ -182,8 +189,9 @@ void NodeRuntime::publish(std::string_view output, std::shared_ptr<const void> p
   if (port.type() != type)
     throw Error("published a " + std::string(type) + " on output '" + port.name + "', declared as " + port.type());
   if (!payload) throw Error("published a null message on output '" + port.name + "'");
-  const Envelope envelope{std::move(payload), type, run->executor->now(),
-                          run->next_sequence.fetch_add(1, std::memory_order_relaxed)};
+  const Envelope envelope{
+      std::move(payload), type, run->executor->now(), run->next_sequence.fetch_add(1, std::memory_order_relaxed), id(),
+      port.name};
   if (captured && *captured <= envelope.published_at) latency.record((envelope.published_at - *captured).count());
   messages_out.fetch_add(1, std::memory_order_relaxed);
   for (Edge* edge : outputs[static_cast<std::size_t>(index)]) run->executor->deliver(*edge, envelope);
@@ -226,7 +234,15 @@ bool RunState::instantiate() {
     edge->from = nodes[static_cast<std::size_t>(c.from_node)].get();
     edge->to = nodes[static_cast<std::size_t>(c.to_node)].get();
     edge->to_port = c.to_port;
-    edge->to->inputs[static_cast<std::size_t>(c.to_port)].edge = edge.get();
+    // An input has one connection, except a tap, which gets a slot of its own per connection.
+    edge->to_slot = c.to_port;
+    if (edge->to->inputs[static_cast<std::size_t>(c.to_port)].edge) {
+      InputSlot extra;
+      extra.spec = edge->to->inputs[static_cast<std::size_t>(c.to_port)].spec;
+      edge->to_slot = static_cast<int>(edge->to->inputs.size());
+      edge->to->inputs.push_back(std::move(extra));
+    }
+    edge->to->inputs[static_cast<std::size_t>(edge->to_slot)].edge = edge.get();
     edge->from->outputs[static_cast<std::size_t>(c.from_port)].push_back(edge.get());
     edges.push_back(std::move(edge));
   }
@@ -235,7 +251,7 @@ bool RunState::instantiate() {
   bool ok = true;
   for (auto& rt : nodes) {
     NodeInit init(rt->id(), rt->config->type->spec, rt->config->params, registry, node_seed(seed, rt->id()),
-                  *rt->logger);
+                  *rt->logger, graph.executor == ExecutorKind::realtime);
     try {
       rt->node = rt->config->type->factory(init);
       rt->tick_interval_ns = init.tick_interval_ns();

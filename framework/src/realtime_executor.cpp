@@ -15,7 +15,7 @@ void refresh_latest_inputs(NodeRuntime& node) {
 
 void RealtimeExecutor::deliver(Edge& edge, const Envelope& envelope) {
   NodeRuntime& to = *edge.to;
-  InputSlot& slot = to.inputs[static_cast<std::size_t>(edge.to_port)];
+  InputSlot& slot = to.inputs[static_cast<std::size_t>(edge.to_slot)];
   std::unique_lock lock(to.mutex);
   if (to.exited) {
     ++edge.dropped;

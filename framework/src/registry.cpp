@@ -25,6 +25,13 @@ void Registry::add_node(NodeSpec spec, NodeFactory factory) {
                 origin(current_plugin_));
   if (spec.summary().empty()) throw Error("node type '" + type + "' has a malformed spec: no summary");
   check_spec("node type '" + type + "'", spec.param_set());
+  for (const auto& port : spec.inputs()) {
+    if (!port.tap) continue;
+    const ParamSpec* topics = spec.find_param(port.tap->topics_param);
+    if (!topics || topics->type != ParamType::string)
+      throw Error("node type '" + type + "' has a malformed spec: tap '" + port.name + "' names '" +
+                  port.tap->topics_param + "', which is not a string parameter");
+  }
   for (const auto* ports : {&spec.inputs(), &spec.outputs()})
     for (const auto& port : *ports) add_message(port.message);
   nodes_.emplace(type, NodeType{std::move(spec), std::move(factory), current_plugin_});

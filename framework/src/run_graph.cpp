@@ -128,20 +128,13 @@ RunResult run_graph(const GraphConfig& graph, const Registry& registry, const Ru
   result.errors = run.errors();
   collect_stats(run, result);
 
-  result.report = {{"kestrel_version", KESTREL_VERSION_STRING},
-                   {"graph",
-                    {{"file", graph.file.string()},
-                     {"name", graph.name},
-                     {"executor", graph.executor == ExecutorKind::lockstep ? "lockstep" : "realtime"},
-                     {"clock", graph.clock == ClockKind::simulated ? "simulated" : "wall"},
-                     {"seed", options.seed.value_or(graph.seed)},
-                     {"hash", detail::graph_hash(graph)},
-                     {"resolved", detail::resolved_graph_json(graph)}}},
-                   {"outcome", outcome_name(result.outcome)},
-                   {"errors", result.errors},
-                   {"run_time_s", result.sim_time_s},
-                   {"wall_time_s", result.wall_time_s},
-                   {"stats", stats_json(result)}};
+  result.report = detail::run_description(graph, options);
+  result.report["graph"]["hash"] = detail::graph_hash(graph);
+  result.report.update({{"outcome", outcome_name(result.outcome)},
+                        {"errors", result.errors},
+                        {"run_time_s", result.sim_time_s},
+                        {"wall_time_s", result.wall_time_s},
+                        {"stats", stats_json(result)}});
   nlohmann::json metrics_meta = nlohmann::json::object();
   for (const auto& [path, meta] : run.report.metrics()) {
     nlohmann::json m = {{"unit", meta.unit}};

@@ -28,6 +28,7 @@ struct Edge {
   NodeRuntime* from = nullptr;
   NodeRuntime* to = nullptr;
   int to_port = -1;
+  int to_slot = -1;            // index into to->inputs: the port's slot, or a tap's extra slot
   std::deque<Envelope> queue;  // triggering inputs only
   std::uint64_t delivered = 0;
   std::uint64_t dropped = 0;

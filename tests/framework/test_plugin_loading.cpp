@@ -35,9 +35,9 @@ TEST(PluginLoading, GoodPluginRegistersItsTypes) {
   EXPECT_THAT(info.node_types, ::testing::Contains("counter_source"));
   // Its own message types, and the framework's that its ports use: a plugin brings the message
   // types it needs, the runtime registers none.
-  EXPECT_THAT(info.messages, ::testing::UnorderedElementsAre("test.Number", "test.Blob", "test.Counted",
-                                                             "kestrel.Detections", "kestrel.GroundTruth",
-                                                             "kestrel.Tracks"));
+  EXPECT_THAT(info.messages,
+              ::testing::UnorderedElementsAre("test.Number", "test.Blob", "test.Counted", "kestrel.Detections",
+                                              "kestrel.GroundTruth", "kestrel.Tracks"));
   const NodeType* relay = host.registry().find_node("relay");
   ASSERT_NE(relay, nullptr);
   EXPECT_EQ(relay->plugin, kGood.string());

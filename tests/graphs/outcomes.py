@@ -6,7 +6,9 @@ what the graph's own description promises), never from one run's figures. Every 
 needs an entry: a new graph without one fails its test.
 
   outcomes.py duration GRAPH              the run length (s) for GRAPH's shortened run
-  outcomes.py check GRAPH REPORT_JSON S   checks the report of an S-second run; exit 1 on failure
+  outcomes.py check GRAPH REPORT_JSON S [LIVE_REPORT_JSON]
+                                          checks the report of an S-second run; exit 1 on failure
+  outcomes.py recorded GRAPH              the graph to record first for a replay graph (or nothing)
 
 In the checks, `d` is the report's "detection" section, `t` its "tracking" section, `s` the run
 length in seconds and `frames` the camera frames in it (30 FPS).
@@ -50,8 +52,16 @@ ONE_TARGET = [
      "filtering averages the detections' noise down"),
 ]
 
+# Graphs that replay a recording: the graph whose shortened run is recorded first (the live run),
+# and the replay's report is checked with `live` set to the live run's report.
+RECORDED_FROM = {"mcap_replay_detection": "paper_detection"}
+
 OUTCOMES = {
     "paper_detection": (2.0, DETECTION),
+    "mcap_replay_detection": (2.0, DETECTION + [
+        ("d == live['detection']", "the replayed frames and truth give exactly the live run's figures"),
+        ("r['replay']['published'] == 2 * frames", "every recorded frame and truth is replayed"),
+    ]),
     "paper_tracking": (2.0, DETECTION + TRACKING + ONE_TARGET),
     # The same contract as the Kalman tracker (docs/tracking.md).
     "paper_tracking_particle": (2.0, DETECTION + TRACKING + ONE_TARGET),
@@ -135,13 +145,17 @@ def main(argv):
             sys.exit(f"no outcome check for graph '{argv[2]}': add one to {__file__}")
         print(OUTCOMES[argv[2]][0])
         return 0
-    if len(argv) == 5 and argv[1] == "check":
+    if len(argv) == 3 and argv[1] == "recorded":
+        print(RECORDED_FROM.get(argv[2], ""))
+        return 0
+    if len(argv) in (5, 6) and argv[1] == "check":
         graph, report_file, s = argv[2], argv[3], float(argv[4])
+        live = json.load(open(argv[5])) if len(argv) == 6 else None
         if graph not in OUTCOMES:
             sys.exit(f"no outcome check for graph '{graph}': add one to {__file__}")
         report = json.load(open(report_file))
         scope = {"math": math, "r": report, "d": report.get("detection"), "t": report.get("tracking"), "s": s,
-                 "frames": round(FPS * s)}
+                 "frames": round(FPS * s), "live": live}
         failed = 0
         if report.get("outcome") != "completed":
             print(f"FAIL outcome is {report.get('outcome')!r}, not 'completed'")

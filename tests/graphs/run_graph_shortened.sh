@@ -9,7 +9,16 @@ here=$(cd "$(dirname "$0")" && pwd)
 name=$(basename "$graph" .yaml)
 duration=${KESTREL_SHORT_DURATION:-$(python3 "$here/outcomes.py" duration "$name")}
 rm -rf "$out"
-"$cli" validate "$graph"
-"$cli" run "$graph" --duration "$duration" --report "$out" --no-progress --stats
+# A replay graph replays a recording of the shortened run of the graph it names.
+recorded=$(python3 "$here/outcomes.py" recorded "$name")
+replay=() live=()
+if [ -n "$recorded" ]; then
+  "$cli" run "$(dirname "$graph")/$recorded.yaml" --duration "$duration" --record "$out/live/run.mcap" \
+    --report "$out/live" --no-progress
+  replay=(--set "replay.file=$out/live/run.mcap")
+  live=("$out/live/report.json")
+fi
+"$cli" validate "$graph" "${replay[@]}"
+"$cli" run "$graph" --duration "$duration" --report "$out" --no-progress --stats "${replay[@]}"
 test -s "$out/report.md"
-python3 "$here/outcomes.py" check "$name" "$out/report.json" "$duration"
+python3 "$here/outcomes.py" check "$name" "$out/report.json" "$duration" "${live[@]}"

@@ -66,13 +66,15 @@ MessageInfo message_info() {
   return info;
 }
 
-/// One published message: the immutable payload, its type name, when it was published and a
-/// per-run sequence number that gives every message a total order.
+/// One published message: the immutable payload, its type name, when it was published, a
+/// per-run sequence number that gives every message a total order, and the output it came from.
 struct Envelope {
   std::shared_ptr<const void> payload;
   std::string_view type;
   Time published_at{0};
   std::uint64_t sequence = 0;
+  std::string_view source_node;  ///< id of the node that published it; valid for the whole run
+  std::string_view source_port;  ///< the output it was published on
 
   explicit operator bool() const { return payload != nullptr; }
 };

@@ -69,8 +69,8 @@ class Node {
 class NodeInit : public InitBase {
  public:
   NodeInit(std::string id, const NodeSpec& spec, const Params& params, const Registry& registry, std::uint64_t seed,
-           Logger& log)
-      : InitBase(id, spec.param_set(), params, registry, seed, log), spec_(spec) {}
+           Logger& log, bool realtime = false)
+      : InitBase(id, spec.param_set(), params, registry, seed, log), spec_(spec), realtime_(realtime) {}
 
   const std::string& id() const { return name(); }
   const NodeSpec& spec() const { return spec_; }
@@ -82,9 +82,13 @@ class NodeInit : public InitBase {
   void set_period(Duration period);
   /// Nanoseconds between ticks; 0 if the node has no timer.
   double tick_interval_ns() const { return tick_interval_ns_; }
+  /// True under the realtime executor, where a node that does slow I/O (a recorder) must not
+  /// hold up the graph; false under lockstep, where every call is part of a reproducible step.
+  bool realtime() const { return realtime_; }
 
  private:
   const NodeSpec& spec_;
+  bool realtime_ = false;
   double tick_interval_ns_ = 0.0;
 };
 
@@ -141,6 +145,9 @@ class Context {
   /// Says a metric has a unit but no better direction (a count of frames or of objects): report.json
   /// gives its unit and no "higher_is_better", and sweep and ab give it no verdict.
   void describe_quantity(const std::string& path, std::string unit = {});
+  /// What is running, as report.json's `kestrel_version` and `graph` record it: {"kestrel_version",
+  /// "graph": {"file", "name", "executor", "clock", "seed", "duration_s", "resolved"}}.
+  nlohmann::json run_description() const;
   /// True when the run keeps a report folder, so that artifacts are worth preparing.
   bool keeps_artifacts() const;
   /// Adds a file to the run report (a PNG is shown in report.md): the runtime writes it, checks

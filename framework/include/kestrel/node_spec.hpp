@@ -61,15 +61,29 @@ class NodeSpec : public SpecBase<NodeSpec> {
 
   template <MessageType T>
   NodeSpec& input(const Input<T>& port, std::string description, InputOptions options = {}) {
-    inputs_.push_back(
-        PortSpec{std::string(port.name), message_info<T>(), std::move(description), options.trigger, options.optional});
+    inputs_.push_back(PortSpec{std::string(port.name), message_info<T>(), std::move(description), options.trigger,
+                               options.optional, std::nullopt});
     return *this;
   }
 
+  /// A tap input (TapOptions): the builder connects it to every output its topic parameter
+  /// selects, and a graph may connect more outputs to it by hand. Envelope::source_node and
+  /// source_port say where each message came from.
+  NodeSpec& tap(const Input<AnyMessage>& port, std::string description, TapOptions options) {
+    PortSpec spec{std::string(port.name),
+                  message_info<AnyMessage>(),
+                  std::move(description),
+                  Trigger::on_message,
+                  true,
+                  std::nullopt};
+    spec.tap = std::move(options);
+    inputs_.push_back(std::move(spec));
+    return *this;
+  }
   template <MessageType T>
   NodeSpec& output(const Output<T>& port, std::string description) {
-    outputs_.push_back(
-        PortSpec{std::string(port.name), message_info<T>(), std::move(description), Trigger::on_message, false});
+    outputs_.push_back(PortSpec{std::string(port.name), message_info<T>(), std::move(description), Trigger::on_message,
+                                false, std::nullopt});
     return *this;
   }
 

@@ -5,8 +5,10 @@
 //   static constexpr kestrel::Input<msg::PointCloud> kCloud{"cloud"};
 //   ...  spec.input(kCloud, "camera-frame points");
 //   ...  auto cloud = ctx.get(kCloud);
+#include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "kestrel/message.hpp"
 
@@ -37,6 +39,16 @@ struct InputOptions {
   bool optional = false;  ///< may be left unconnected; get() then returns null
 };
 
+/// A tap: an input of any type that the graph builder connects to every output it selects, as
+/// a recorder or a live view needs. Outputs are selected by their topic, "/NODE/PORT".
+struct TapOptions {
+  /// A string parameter of the node: topic patterns (fnmatch globs, `*` crosses '/'), separated by
+  /// commas or spaces; a pattern starting with '!' takes topics out. Without a positive pattern
+  /// the tap takes every output that is connected to something, except those of `skip_types`.
+  std::string topics_param;
+  std::vector<std::string> skip_types;  ///< message type names the default selection leaves out
+};
+
 /// A port as the registry, the validator and `kestrel inspect` see it.
 struct PortSpec {
   std::string name;
@@ -44,6 +56,8 @@ struct PortSpec {
   std::string description;
   Trigger trigger = Trigger::on_message;
   bool optional = false;
+  /// Set for a tap input (NodeSpec::tap), which takes any number of connections.
+  std::optional<TapOptions> tap;
 
   /// The message type's name, as graphs and errors show it.
   const std::string& type() const { return message.name; }

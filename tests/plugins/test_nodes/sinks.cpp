@@ -53,6 +53,28 @@ class Collector final : public Node {
 };
 KESTREL_REGISTER_NODE(Collector)
 
+// A tap: lists, in order, every message it received with the output it came from, as a recorder
+// sees them.
+class TapLog final : public Node {
+ public:
+  static constexpr Input<AnyMessage> kIn{"in"};
+  static NodeSpec spec() {
+    return NodeSpec("tap_log", "Lists each message it taps as NODE.PORT:TYPE, in the order received")
+        .tap(kIn, "every output its topics select", TapOptions{"topics", {"test.Blob"}})
+        .param(param("topics", std::string()).describe("topic patterns (empty: every connected output but blobs)"));
+  }
+  explicit TapLog(NodeInit&) {}
+  void process(Context& ctx) override {
+    const Envelope& e = ctx.envelope(kIn.name);
+    log_.push_back(std::string(e.source_node) + "." + std::string(e.source_port) + ":" + std::string(e.type));
+  }
+  void finish(Context& ctx) override { ctx.set_report_section(ctx.id(), {{"log", log_}}); }
+
+ private:
+  std::vector<std::string> log_;
+};
+KESTREL_REGISTER_NODE(TapLog)
+
 class BlobSink final : public Node {
  public:
   static constexpr Input<Blob> kIn{"in"};

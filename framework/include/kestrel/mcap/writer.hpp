@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iosfwd>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -41,9 +42,10 @@ class Writer {
   /// Registers a channel and returns its id (from 0). `schema_id` 0 means no schema.
   std::uint16_t add_channel(std::uint16_t schema_id, const std::string& topic, const std::string& message_encoding,
                             const KeyValues& metadata = {});
-  /// Appends a message; its sequence number counts the channel's messages from 0.
+  /// Appends a message; its sequence number is `sequence`, or by default counts the channel's
+  /// messages from 0.
   void write_message(std::uint16_t channel_id, Timestamp log_time, Timestamp publish_time,
-                     std::span<const std::uint8_t> data);
+                     std::span<const std::uint8_t> data, std::optional<std::uint32_t> sequence = std::nullopt);
   /// Metadata and attachments go between chunks, never inside one.
   void write_metadata(const Metadata& metadata);
   void write_attachment(const Attachment& attachment);

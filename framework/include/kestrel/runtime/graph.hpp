@@ -98,9 +98,12 @@ struct BuildResult {
 };
 
 /// Validates `source` against `registry`. Each override is "node.param=value" (the value is
-/// parsed as YAML) and is checked like the file's own values.
+/// parsed as YAML) and is checked like the file's own values. Each fragment (a map with `nodes`
+/// and `connections` only, such as the recorder `kestrel run --record` adds) joins the graph as
+/// an included file would; its errors carry its label.
 BuildResult build_graph(const GraphSource& source, const Registry& registry,
-                        const std::vector<std::string>& overrides = {});
+                        const std::vector<std::string>& overrides = {},
+                        const std::vector<const GraphSource*>& fragments = {});
 
 /// The graph in Graphviz dot.
 std::string to_dot(const GraphConfig& graph);

@@ -1,0 +1,27 @@
+#pragma once
+// Which outputs a tap input takes (TapOptions in ports.hpp): topic patterns, as `kestrel run
+// --record FILE --topics PATTERNS` and the recorder's `topics` parameter give them.
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace kestrel {
+
+/// The topic of an output: "/NODE/PORT", as MCAP channels and ROS 2 topics name it.
+std::string output_topic(std::string_view node, std::string_view port);
+
+class TopicSelection {
+ public:
+  /// `patterns`: fnmatch globs separated by commas or spaces (`*` crosses '/'); '!' before a
+  /// pattern takes what it matches out. `skip_types`: what the default selection leaves out.
+  TopicSelection(const std::string& patterns, std::vector<std::string> skip_types);
+
+  /// Whether an output is taken. `connected`: it feeds at least one input other than a tap.
+  bool selects(const std::string& topic, std::string_view type, bool connected) const;
+
+ private:
+  std::vector<std::string> take_, leave_;
+  std::vector<std::string> skip_types_;
+};
+
+}  // namespace kestrel

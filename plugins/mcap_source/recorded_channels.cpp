@@ -1,0 +1,90 @@
+#include "recorded_channels.hpp"
+
+#include <cmath>
+#include <kestrel/error.hpp>
+#include <limits>
+#include <set>
+
+namespace kestrel::replay {
+
+RecordedChannels::RecordedChannels(const std::filesystem::path& file, std::vector<ReplayedPort> ports)
+    : reader_(file), ports_(std::move(ports)) {
+  const auto& summary = reader_.summary();
+  std::map<std::uint16_t, std::uint64_t> counts;
+  for (const auto& [id, count] : summary.statistics.channel_message_counts) counts[id] = count;
+  std::uint64_t busiest = 0;
+  for (std::size_t p = 0; p < ports_.size(); ++p) {
+    const ReplayedPort& port = ports_[p];
+    decoders_.push_back(ros2::make_decoder(port.kestrel_type));
+    if (!decoders_.back()) throw Error("messages of type " + port.kestrel_type + " cannot be replayed");
+    const auto inputs = decoders_.back()->inputs();
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+      const std::string topic = port.topic + inputs[i].topic;
+      bool found = false;
+      std::set<std::string> other_types;
+      for (const auto& [id, channel] : summary.channels) {
+        if (channel.topic != topic) continue;
+        const auto schema = summary.schemas.find(channel.schema_id);
+        const std::string type = schema == summary.schemas.end() ? "no schema" : schema->second.name;
+        if (type != inputs[i].schema || channel.message_encoding != "cdr") {
+          other_types.insert(type + " (" + channel.message_encoding + ")");
+          continue;
+        }
+        found = true;
+        routes_[id] = Route{p, i, ros2::ChannelMetadata(channel.metadata.begin(), channel.metadata.end())};
+        topics_.push_back(topic);
+        if (counts[id] > busiest) busiest = counts[id];
+      }
+      if (!found) {
+        std::string have;
+        for (const auto& t : other_types) have += (have.empty() ? "" : ", ") + t;
+        throw Error(file.string() + " has no channel " + topic + " of " + inputs[i].schema + " (cdr) for port '" +
+                    port.port + "'" + (have.empty() ? "; kestrel mcap info lists its channels" : "; it has " + have));
+      }
+    }
+  }
+  // The busiest channel's rate, from its first and last log times.
+  for (const auto& entry : routes_) {
+    const std::uint16_t id = entry.first;
+    if (counts[id] != busiest || busiest < 2) continue;
+    mcap::Timestamp first = 0, last = 0;
+    bool any = false;
+    mcap::MessageFilter filter;
+    filter.topics = {summary.channels.at(id).topic};
+    reader_.read_messages(filter, [&](const mcap::MessageView& m) {
+      if (m.channel.id != id) return;
+      if (!any) first = m.message.log_time;
+      any = true;
+      last = m.message.log_time;
+    });
+    if (last > first)
+      busiest_rate_hz_ =
+          std::round(1e9 * static_cast<double>(busiest - 1) / static_cast<double>(last - first) * 1000.0) / 1000.0;
+    break;
+  }
+  // Without a summary (a file cut short) the end is not known before reading it all.
+  end_time_ = summary.indexed ? summary.statistics.message_end_time : std::numeric_limits<mcap::Timestamp>::max();
+}
+
+void RecordedChannels::replay(mcap::Timestamp from, mcap::Timestamp to,
+                              const std::function<void(std::size_t, std::shared_ptr<const void>)>& publish) {
+  mcap::MessageFilter filter;
+  filter.start = from;
+  filter.end = to;
+  filter.topics = topics_;
+  reader_.read_messages(filter, [&](const mcap::MessageView& m) {
+    const auto route = routes_.find(m.channel.id);
+    if (route == routes_.end()) return;
+    auto message = decoders_[route->second.port]->feed(route->second.input, m.message.data, m.message.sequence,
+                                                       route->second.metadata);
+    if (message) publish(route->second.port, std::move(message));
+  });
+}
+
+std::uint64_t RecordedChannels::unpaired() const {
+  std::uint64_t n = 0;
+  for (const auto& d : decoders_) n += d->unpaired();
+  return n;
+}
+
+}  // namespace kestrel::replay
