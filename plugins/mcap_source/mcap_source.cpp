@@ -112,7 +112,7 @@ class McapSourceNode final : public Node {
 
   void publish(Context& ctx, std::size_t index, std::shared_ptr<const void> message) {
     ++published_;
-    const std::string& port = ports_names_.at(index);
+    const std::string& port = channels_.ports().at(index).port;
     if (port == "frame") return send(ctx, kFrame, std::move(message));
     if (port == "truth") return send(ctx, kTruth, std::move(message));
     if (port == "cloud") return send(ctx, kCloud, std::move(message));
@@ -123,11 +123,6 @@ class McapSourceNode final : public Node {
 
   McapSourceConfig cfg_;
   RecordedChannels channels_;
-  std::vector<std::string> ports_names_ = [this] {
-    std::vector<std::string> names;
-    for (const auto& p : ports(cfg_)) names.push_back(p.port);
-    return names;
-  }();
   mcap::Timestamp next_ = 0;
   std::uint64_t published_ = 0;
 };

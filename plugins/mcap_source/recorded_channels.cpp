@@ -43,23 +43,23 @@ RecordedChannels::RecordedChannels(const std::filesystem::path& file, std::vecto
       }
     }
   }
-  // The busiest channel's rate, from its first and last log times.
+  // The busiest channel's rate, from its log times over the recording's first second: only the
+  // chunks of that second are read.
   for (const auto& entry : routes_) {
     const std::uint16_t id = entry.first;
     if (counts[id] != busiest || busiest < 2) continue;
-    mcap::Timestamp first = 0, last = 0;
-    bool any = false;
+    std::vector<mcap::Timestamp> times;
     mcap::MessageFilter filter;
+    filter.start = summary.statistics.message_start_time;
+    filter.end = summary.statistics.message_start_time + 1'000'000'000;
     filter.topics = {summary.channels.at(id).topic};
     reader_.read_messages(filter, [&](const mcap::MessageView& m) {
-      if (m.channel.id != id) return;
-      if (!any) first = m.message.log_time;
-      any = true;
-      last = m.message.log_time;
+      if (m.channel.id == id) times.push_back(m.message.log_time);
     });
-    if (last > first)
-      busiest_rate_hz_ =
-          std::round(1e9 * static_cast<double>(busiest - 1) / static_cast<double>(last - first) * 1000.0) / 1000.0;
+    if (times.size() >= 2 && times.back() > times.front())
+      busiest_rate_hz_ = std::round(1e9 * static_cast<double>(times.size() - 1) /
+                                    static_cast<double>(times.back() - times.front()) * 1000.0) /
+                         1000.0;
     break;
   }
   // Without a summary (a file cut short) the end is not known before reading it all.

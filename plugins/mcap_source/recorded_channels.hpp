@@ -33,10 +33,12 @@ class RecordedChannels {
 
   /// Log time of the last message read, for the end of the stream.
   mcap::Timestamp end_time() const { return end_time_; }
-  /// The rate of the busiest port's channel, rounded to 1/1000 Hz: a recording of a 30 Hz camera
-  /// gives exactly 30, so that ticks fall on the recorded times. 0 if it cannot tell.
+  /// The rate of the busiest port's channel over the recording's first second, rounded to
+  /// 1/1000 Hz: a recording of a 30 Hz camera gives exactly 30, so that ticks fall on the
+  /// recorded times. 0 if it cannot tell.
   double busiest_rate_hz() const { return busiest_rate_hz_; }
   std::uint64_t unpaired() const;
+  const std::vector<ReplayedPort>& ports() const { return ports_; }
   const std::vector<std::string>& problems() const { return reader_.problems(); }
 
  private:

@@ -56,7 +56,9 @@ void McapRecording::record(const Envelope& e) {
     return;
   }
   const std::string topic = topic_of(e);
-  const auto specs = ros2::channels_for(type, topic);
+  auto known = specs_.find(topic);
+  if (known == specs_.end()) known = specs_.emplace(topic, ros2::channels_for(type, topic)).first;
+  const auto& specs = known->second;
   const ros2::Encoded encoded = ros2::encode(type, e.payload.get(), topic);
   const auto at = static_cast<mcap::Timestamp>(std::max<std::int64_t>(0, e.published_at.count()));
   for (const auto& m : encoded.messages) {

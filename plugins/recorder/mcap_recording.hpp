@@ -37,7 +37,8 @@ class McapRecording {
   std::uint16_t channel(const ros2::ChannelSpec& spec, const ros2::ChannelMetadata& metadata);
 
   mcap::Writer writer_;
-  std::map<std::string, std::uint16_t> channels_;  // topic + schema + metadata -> channel id
+  std::map<std::string, std::uint16_t> channels_;                // topic + schema + metadata -> channel id
+  std::map<std::string, std::vector<ros2::ChannelSpec>> specs_;  // output topic -> its channels
   std::map<std::string, std::uint64_t> by_topic_;
   std::map<std::string, std::uint64_t> unrecorded_;
   std::uint64_t messages_ = 0, bytes_ = 0;

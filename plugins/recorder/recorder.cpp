@@ -68,12 +68,11 @@ class RecorderNode final : public Node {
   void process(Context& ctx) override {
     if (!metadata_written_) write_metadata(ctx);
     const Envelope& e = ctx.envelope(kIn.name);
-    if (realtime_) {
-      queue_.push(e);
-      return;
-    }
-    recording_.record(e);
     warn_unrecorded(ctx.log(), e);
+    if (realtime_)
+      queue_.push(e);
+    else
+      recording_.record(e);
   }
 
   void finish(Context& ctx) override {

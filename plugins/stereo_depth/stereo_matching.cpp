@@ -37,19 +37,24 @@ cv::Ptr<cv::StereoMatcher> make_matcher(const MatcherOptions& o) {
                                 o.pre_filter_cap, o.uniqueness_ratio, o.speckle_window_size, o.speckle_range, mode);
 }
 
-cv::Mat compute_disparity(cv::StereoMatcher& matcher, const cv::Mat& left, const cv::Mat& right) {
+GreyPair grey_pair(const cv::Mat& left, const cv::Mat& right) {
   if (left.empty() || right.empty()) throw Error("empty stereo image");
   if (left.size() != right.size() || left.type() != right.type())
     throw Error("left and right images differ in size or type");
   if (left.depth() != CV_8U || (left.channels() != 1 && left.channels() != 3))
     throw Error("stereo images must be 8-bit grey or BGR");
-  cv::Mat l = left, r = right;
+  GreyPair grey{left, right};
   if (left.channels() == 3) {
-    cv::cvtColor(left, l, cv::COLOR_BGR2GRAY);
-    cv::cvtColor(right, r, cv::COLOR_BGR2GRAY);
+    cv::cvtColor(left, grey.left, cv::COLOR_BGR2GRAY);
+    cv::cvtColor(right, grey.right, cv::COLOR_BGR2GRAY);
   }
+  return grey;
+}
+
+cv::Mat compute_disparity(cv::StereoMatcher& matcher, const cv::Mat& left, const cv::Mat& right) {
+  const GreyPair grey = grey_pair(left, right);
   cv::Mat disparity;
-  matcher.compute(l, r, disparity);
+  matcher.compute(grey.left, grey.right, disparity);
   return disparity;
 }
 

@@ -30,6 +30,13 @@ struct MatcherOptions {
 /// Throws kestrel::Error if the options are not ones OpenCV accepts.
 cv::Ptr<cv::StereoMatcher> make_matcher(const MatcherOptions& options);
 
+/// A rectified pair as the matchers take it: checked (same size and type, 8-bit grey or BGR;
+/// kestrel::Error otherwise) and grey (BGR converted, grey shared, not copied).
+struct GreyPair {
+  cv::Mat left, right;
+};
+GreyPair grey_pair(const cv::Mat& left, const cv::Mat& right);
+
 /// Disparity of a rectified pair (8-bit grey or BGR): CV_16S, in 1/16 pixel, negative = invalid.
 cv::Mat compute_disparity(cv::StereoMatcher& matcher, const cv::Mat& left, const cv::Mat& right);
 

@@ -1,7 +1,6 @@
 #include "striped_matcher.hpp"
 
 #include <opencv2/core/utility.hpp>
-#include <opencv2/imgproc.hpp>
 
 #include "kestrel/error.hpp"
 
@@ -26,16 +25,9 @@ StripedMatcher::StripedMatcher(const MatcherOptions& options, int strips, int ov
 cv::Mat StripedMatcher::compute(const cv::Mat& left, const cv::Mat& right) {
   if (matchers_.size() == 1) return compute_disparity(*matchers_.front(), left, right);
   // Checks and the conversion to grey once, for every strip.
-  if (left.empty() || right.empty()) throw Error("empty stereo image");
-  if (left.size() != right.size() || left.type() != right.type())
-    throw Error("left and right images differ in size or type");
-  if (left.depth() != CV_8U || (left.channels() != 1 && left.channels() != 3))
-    throw Error("stereo images must be 8-bit grey or BGR");
-  cv::Mat l = left, r = right;
-  if (left.channels() == 3) {
-    cv::cvtColor(left, l, cv::COLOR_BGR2GRAY);
-    cv::cvtColor(right, r, cv::COLOR_BGR2GRAY);
-  }
+  const GreyPair grey = grey_pair(left, right);
+  const cv::Mat& l = grey.left;
+  const cv::Mat& r = grey.right;
   // Strips of equal work: every strip but the first also matches the overlap above it, so the
   // first keeps `overlap_rows_` more rows than each of the others.
   const int rows = l.rows;
