@@ -1,0 +1,124 @@
+// What mcap_source replays, on a recording whose content is known: messages come back per port in
+// the log-time windows asked for, a stereo frame from its four channels, the rate from the log
+// times, and a topic that is missing or of another type is refused with what the file holds.
+#include <gmock/gmock.h>
+
+#include <filesystem>
+#include <kestrel/messages/ground_truth.hpp>
+#include <kestrel/messages/stereo_frame.hpp>
+
+#include "kestrel/mcap/writer.hpp"
+#include "kestrel/ros2/definitions.hpp"
+#include "kestrel/ros2/message_mapping.hpp"
+#include "recorded_channels.hpp"
+
+using namespace kestrel;
+using namespace kestrel::replay;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Writes `message` as the recorder does, on the channels of `topic`, logged at `t`.
+class TestRecording {
+ public:
+  explicit TestRecording(const fs::path& file) : writer_(file, mcap::WriterOptions{"ros2", "test", "", 0, 4096}) {}
+  template <class T>
+  void write(const T& message, const std::string& topic, std::uint64_t t) {
+    const std::string type(MessageTraits<T>::name);
+    const auto specs = ros2::channels_for(type, topic);
+    const auto encoded = ros2::encode(type, &message, topic);
+    for (const auto& m : encoded.messages) {
+      const auto& spec = specs[m.channel];
+      const std::string key = spec.topic;
+      if (!channels_.count(key)) {
+        const std::string& text = ros2::schema_text(spec.schema);
+        const auto schema = writer_.add_schema(spec.schema, "ros2msg",
+                                               {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
+        channels_[key] = writer_.add_channel(
+            schema, spec.topic, "cdr",
+            spec.derived ? mcap::KeyValues{} : mcap::KeyValues(encoded.metadata.begin(), encoded.metadata.end()));
+      }
+      writer_.write_message(channels_[key], t, t, m.cdr, m.sequence);
+    }
+  }
+  void finish() { writer_.finish(); }
+
+ private:
+  mcap::Writer writer_;
+  std::map<std::string, std::uint16_t> channels_;
+};
+
+msg::GroundTruth truth(std::uint64_t id, double x) {
+  msg::GroundTruth g;
+  g.stamp = Time(static_cast<std::int64_t>(id) * 40'000'000);
+  g.objects.push_back({id, {x, 0, 0}, {0, 0, x}, {0, 0, 0}, true});
+  return g;
+}
+
+msg::StereoFrame frame(std::uint64_t index, std::int64_t stamp_ns) {
+  msg::StereoFrame f;
+  f.stamp = Time(stamp_ns);
+  f.frame_index = index;
+  f.left = cv::Mat(2, 3, CV_8UC1, cv::Scalar(static_cast<double>(index)));
+  f.right = cv::Mat(2, 3, CV_8UC1, cv::Scalar(static_cast<double>(index + 1)));
+  f.calibration = {3, 2, 300.0, 300.0, 1.0, 1.0, 0.12};
+  return f;
+}
+
+fs::path file(const std::string& name) {
+  const auto dir = fs::temp_directory_path() / "kestrel-mcap-source";
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+}  // namespace
+
+TEST(RecordedChannels, ReplaysEachPortInTheWindowsAskedForAtTheRecordedRate) {
+  const auto f = file("truth.mcap");
+  {
+    TestRecording rec(f);
+    for (std::uint64_t k = 0; k < 10; ++k) rec.write(truth(k, static_cast<double>(k)), "/cam/truth", k * 40'000'000);
+    rec.write(frame(0, 0), "/cam/frame", 0);
+    rec.write(frame(1, 40'000'000), "/cam/frame", 40'000'000);
+    rec.finish();
+  }
+  RecordedChannels channels(
+      f, {{"truth", "kestrel.GroundTruth", "/cam/truth"}, {"frame", "kestrel.StereoFrame", "/cam/frame"}});
+  EXPECT_EQ(channels.busiest_rate_hz(), 25.0);  // 40 ms apart
+  EXPECT_EQ(channels.end_time(), 360'000'000u);
+  std::vector<std::pair<std::size_t, double>> got;
+  auto collect = [&](std::size_t port, std::shared_ptr<const void> m) {
+    if (port == 0) got.emplace_back(0, static_cast<const msg::GroundTruth*>(m.get())->objects[0].position_world.x());
+    if (port == 1) got.emplace_back(1, static_cast<double>(static_cast<const msg::StereoFrame*>(m.get())->frame_index));
+  };
+  channels.replay(0, 40'000'001, collect);  // the first two of each
+  EXPECT_THAT(got,
+              ::testing::ElementsAre(std::pair<std::size_t, double>{0, 0.0}, std::pair<std::size_t, double>{1, 0.0},
+                                     std::pair<std::size_t, double>{0, 1.0}, std::pair<std::size_t, double>{1, 1.0}));
+  got.clear();
+  channels.replay(40'000'001, 200'000'001, collect);
+  EXPECT_EQ(got.size(), 4u);  // truths 2 to 5
+  EXPECT_EQ(got.back().second, 5.0);
+  EXPECT_EQ(channels.unpaired(), 0u);
+}
+
+TEST(RecordedChannels, RefusesATopicThatIsMissingOrOfAnotherType) {
+  const auto f = file("refuse.mcap");
+  {
+    TestRecording rec(f);
+    rec.write(truth(0, 1.0), "/cam/truth", 0);
+    rec.finish();
+  }
+  try {
+    RecordedChannels channels(f, {{"frame", "kestrel.StereoFrame", "/cam/truth"}});
+    FAIL() << "a missing frame topic was accepted";
+  } catch (const Error& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("no channel /cam/truth/left of sensor_msgs/msg/Image"));
+  }
+  try {
+    RecordedChannels channels(f, {{"detections", "kestrel.Detections", "/cam/truth"}});
+    FAIL() << "a ground-truth topic was read as detections";
+  } catch (const Error& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("it has kestrel_msgs/msg/GroundTruth (cdr)"));
+  }
+}
