@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <kestrel/error.hpp>
-#include <limits>
 #include <set>
 
 namespace kestrel::replay {
@@ -62,23 +61,41 @@ RecordedChannels::RecordedChannels(const std::filesystem::path& file, std::vecto
                          1000.0;
     break;
   }
-  // Without a summary (a file cut short) the end is not known before reading it all.
-  end_time_ = summary.indexed ? summary.statistics.message_end_time : std::numeric_limits<mcap::Timestamp>::max();
+  end_time_ = summary.statistics.message_end_time;
+  // Without a summary (a file cut short by a crash) there is no index to read a window by: the
+  // replayed channels are read once, in file order, and handed out from memory.
+  if (!summary.indexed) {
+    mcap::MessageFilter filter;
+    filter.topics = topics_;
+    end_time_ = 0;
+    reader_.read_messages(filter, [&](const mcap::MessageView& m) {
+      if (!routes_.count(m.channel.id)) return;
+      unindexed_.push_back(m.message);
+      end_time_ = std::max(end_time_, m.message.log_time);
+    });
+  }
+}
+
+void RecordedChannels::feed(const mcap::Message& m,
+                            const std::function<void(std::size_t, std::shared_ptr<const void>)>& publish) {
+  const auto route = routes_.find(m.channel_id);
+  if (route == routes_.end()) return;
+  auto message = decoders_[route->second.port]->feed(route->second.input, m.data, m.sequence, route->second.metadata);
+  if (message) publish(route->second.port, std::move(message));
 }
 
 void RecordedChannels::replay(mcap::Timestamp from, mcap::Timestamp to,
                               const std::function<void(std::size_t, std::shared_ptr<const void>)>& publish) {
+  if (!reader_.summary().indexed) {
+    for (; !unindexed_.empty() && unindexed_.front().log_time < to; unindexed_.pop_front())
+      if (unindexed_.front().log_time >= from) feed(unindexed_.front(), publish);
+    return;
+  }
   mcap::MessageFilter filter;
   filter.start = from;
   filter.end = to;
   filter.topics = topics_;
-  reader_.read_messages(filter, [&](const mcap::MessageView& m) {
-    const auto route = routes_.find(m.channel.id);
-    if (route == routes_.end()) return;
-    auto message = decoders_[route->second.port]->feed(route->second.input, m.message.data, m.message.sequence,
-                                                       route->second.metadata);
-    if (message) publish(route->second.port, std::move(message));
-  });
+  reader_.read_messages(filter, [&](const mcap::MessageView& m) { feed(m.message, publish); });
 }
 
 std::uint64_t RecordedChannels::unpaired() const {

@@ -2,6 +2,7 @@
 // What `mcap_source` replays: for each of its ports, the channels of a recording that carry the
 // port's message type under the chosen topic ("/camera/frame" for a StereoFrame: its /left,
 // /right and camera info channels), read back through the ROS 2 mapping's decoders.
+#include <deque>
 #include <filesystem>
 #include <functional>
 #include <kestrel/mcap/reader.hpp>
@@ -31,7 +32,7 @@ class RecordedChannels {
   void replay(mcap::Timestamp from, mcap::Timestamp to,
               const std::function<void(std::size_t, std::shared_ptr<const void>)>& publish);
 
-  /// Log time of the last message read, for the end of the stream.
+  /// Log time of the last message to replay, for the end of the stream.
   mcap::Timestamp end_time() const { return end_time_; }
   /// The rate of the busiest port's channel over the recording's first second, rounded to
   /// 1/1000 Hz: a recording of a 30 Hz camera gives exactly 30, so that ticks fall on the
@@ -47,7 +48,10 @@ class RecordedChannels {
     std::size_t input;  // of the port's decoder
     ros2::ChannelMetadata metadata;
   };
+  void feed(const mcap::Message& m, const std::function<void(std::size_t, std::shared_ptr<const void>)>& publish);
+
   mcap::Reader reader_;
+  std::deque<mcap::Message> unindexed_;  // a file without a summary: its replayed messages, in file order
   std::vector<ReplayedPort> ports_;
   std::vector<std::unique_ptr<ros2::Decoder>> decoders_;
   std::map<std::uint16_t, Route> routes_;  // channel id -> where its messages go
