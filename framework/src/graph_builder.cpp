@@ -284,6 +284,8 @@ void Builder::read_connections() {
   }
 }
 
+constexpr std::size_t kTapQueue = 256;  // messages of one output waiting for a tap (realtime)
+
 // Each tap input takes the outputs its topic parameter selects (tap_selection.hpp), in graph
 // order, beside those connected to it by hand. An output counts as connected when it feeds an
 // input that is not a tap.
@@ -316,7 +318,9 @@ void Builder::connect_taps() {
           c.from_port = port;
           c.to_node = static_cast<int>(t);
           c.to_port = static_cast<int>(p);
-          c.policy = default_policy_;
+          // A tap queues (realtime): `latest` would replace what it has not yet taken, and
+          // `block` would make the graph wait for it. A tap that cannot keep up drops and counts.
+          c.policy = QueuePolicy{QueuePolicy::Kind::fifo, kTapQueue};
           c.where = tap_node.where;
           c.label = fmt::format("{}.{} -> {}.{} (tap)", g_.nodes[n].id, outputs[o].name, tap_node.id, inputs[p].name);
           added.push_back(std::move(c));

@@ -42,6 +42,8 @@ TEST(Taps, ByDefaultTakeEveryConnectedOutputButTheSkippedTypesInPublicationOrder
   EXPECT_THAT(tapped(r), ElementsAre("src.out:test.Number", "double.out:test.Number", "src.out:test.Number",
                                      "double.out:test.Number"));
   EXPECT_EQ(connection_stats(r, "src.out -> tap.in (tap)").drops, 0u);
+  // A tap queues whatever the graph's default policy: it must not replace what it has not taken.
+  EXPECT_EQ(connection_stats(r, "src.out -> tap.in (tap)").policy, "fifo 256");
 }
 
 TEST(Taps, PatternsSelectByTopicAndTakeAnyType) {
