@@ -21,8 +21,9 @@ std::vector<Eigen::Vector3d> detections(int n, int frame, std::mt19937_64& rng) 
   const double t = frame / 30.0;
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector3d centre(2.0 * (i % 10), 2.0 * (i / 10), 5.0);
+    const double nz = noise(rng), ny = noise(rng), nx = noise(rng);  // in sequence, z first, for every compiler
     out.push_back(centre + Eigen::Vector3d(0.3 * std::sin(t + i), 0.3 * std::cos(t + i), 0.0) +
-                  Eigen::Vector3d(noise(rng), noise(rng), noise(rng)));
+                  Eigen::Vector3d(nx, ny, nz));
   }
   return out;
 }

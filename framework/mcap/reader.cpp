@@ -109,7 +109,7 @@ struct Reader::State {
       throw FormatError(what + at_byte(offset) + " is " + std::to_string(n) +
                         " bytes, more than the reader's limit of " + std::to_string(options.max_record_bytes));
     Bytes out(static_cast<std::size_t>(n));
-    source->read(offset, out);
+    if (n > 0) source->read(offset, out);  // an empty vector's data() may be null, which memcpy must not get
     return out;
   }
 

@@ -15,7 +15,9 @@ std::vector<Eigen::Vector3d> FalseAlarmModel::draw(std::mt19937_64& rng) const {
   const auto count = std::poisson_distribution<int>(rate_)(rng);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (int i = 0; i < count; ++i) {
-    const Eigen::Vector3d u(unit(rng), unit(rng), unit(rng));
+    // z first, in sequence: the order GCC evaluated the old call's arguments in, for every compiler.
+    const double uz = unit(rng), uy = unit(rng), ux = unit(rng);
+    const Eigen::Vector3d u(ux, uy, uz);
     out.push_back(box_.min + u.cwiseProduct(box_.max - box_.min));
   }
   return out;

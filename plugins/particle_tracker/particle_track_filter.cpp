@@ -57,7 +57,10 @@ void ParticleTrackFilter::predict(double dt) {
   for (auto& particle : m_particles) {
     particle.d = F * particle.d;
     for (int a = 0; a < 3; ++a) {
-      const Eigen::Vector3d w = L * Eigen::Vector3d(unit(rng_), unit(rng_), unit(rng_));
+      // Drawn z first, in sequenced declarations: the order GCC gave the old constructor call's
+      // unsequenced arguments, now the same with every compiler.
+      const double wz = unit(rng_), wy = unit(rng_), wx = unit(rng_);
+      const Eigen::Vector3d w = L * Eigen::Vector3d(wx, wy, wz);
       for (int k = 0; k < 3; ++k) particle.d(index(a, k)) += w(k);
     }
   }

@@ -51,8 +51,12 @@ std::optional<Eigen::Vector3d> StereoDetectionModel::observe(const Eigen::Vector
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   std::normal_distribution<double> normal(0.0, 1.0);
   const double draw = uniform(rng);
-  const Eigen::Vector3d unit(normal(rng), normal(rng), normal(rng));
-  const Eigen::Vector3d object(normal(rng), normal(rng), normal(rng));
+  // Each vector's z is drawn first, in sequence: the order GCC evaluated the old constructor calls'
+  // unsequenced arguments in, so that every compiler draws the same stream.
+  const double uz = normal(rng), uy = normal(rng), ux = normal(rng);
+  const Eigen::Vector3d unit(ux, uy, uz);
+  const double oz = normal(rng), oy = normal(rng), ox = normal(rng);
+  const Eigen::Vector3d object(ox, oy, oz);
   if (draw >= detection_probability(p.z())) return std::nullopt;
   Eigen::Vector3d uvd = geometry::to_pixel_disparity(params_.camera, p);
   uvd.x() += params_.centroid_sigma_px.x() * unit.x();

@@ -28,8 +28,11 @@ TEST(AimLaw, FromTheAimPoseTheIntruderIsAtTheAimPoint) {
   std::mt19937_64 random(3);
   std::uniform_real_distribution<double> u(-8.0, 8.0);
   for (int i = 0; i < 200; ++i) {
-    const Eigen::Vector3d intruder(u(random), u(random), 2.0 + 0.2 * u(random));
-    const Eigen::Vector3d hunter(u(random), u(random), 2.0);
+    // Drawn in sequence, in the order GCC evaluated the old constructor arguments: every compiler agrees.
+    const double iz = u(random), iy = u(random), ix = u(random);
+    const Eigen::Vector3d intruder(ix, iy, 2.0 + 0.2 * iz);
+    const double hy = u(random), hx = u(random);
+    const Eigen::Vector3d hunter(hx, hy, 2.0);
     const AimPose p = aim_pose(intruder, hunter, 0.3, kAim, kOffset);
     const auto camera = geometry::camera_on_body(
         p.position, Eigen::Quaterniond(Eigen::AngleAxisd(p.yaw, Eigen::Vector3d::UnitZ())), kOffset);

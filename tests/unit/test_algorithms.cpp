@@ -60,7 +60,8 @@ TEST(Assignment, MatchesBruteForceOnRandomRectangularMatrices) {
   std::uniform_real_distribution<double> value(0.0, 3.0);
   std::bernoulli_distribution forbid(0.2);
   for (int trial = 0; trial < 500; ++trial) {
-    Eigen::MatrixXd cost(size(rng), size(rng));
+    const int cols = size(rng), rows = size(rng);  // in sequence, for every compiler
+    Eigen::MatrixXd cost(rows, cols);
     for (int r = 0; r < cost.rows(); ++r)
       for (int c = 0; c < cost.cols(); ++c) cost(r, c) = forbid(rng) ? kForbidden : value(rng);
     const double gate = trial % 2 ? 2.0 : std::numeric_limits<double>::infinity();
@@ -96,7 +97,8 @@ TEST(Assignment, NegativeCostsWithForbiddenPairs) {
   std::uniform_real_distribution<double> value(-3.0, 3.0);
   std::bernoulli_distribution forbid(0.3);
   for (int trial = 0; trial < 500; ++trial) {
-    Eigen::MatrixXd c(size(rng), size(rng));
+    const int cols = size(rng), rows = size(rng);  // in sequence, for every compiler
+    Eigen::MatrixXd c(rows, cols);
     for (int r = 0; r < c.rows(); ++r)
       for (int k = 0; k < c.cols(); ++k) c(r, k) = forbid(rng) ? kForbidden : value(rng);
     const double gate = trial % 3 == 0 ? std::numeric_limits<double>::infinity() : (trial % 3 == 1 ? 1.0 : -0.5);

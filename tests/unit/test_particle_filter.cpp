@@ -29,7 +29,8 @@ double tracking_error(const ParticleOptions& o) {
     f.predict(1.0 / 30);
     const double t = k / 30.0;
     const Eigen::Vector3d truth(std::sin(0.5 * t), 0.5 * std::sin(t), 5.0);
-    f.update(truth + Eigen::Vector3d(noise(rng), noise(rng), noise(rng)));
+    const double nz = noise(rng), ny = noise(rng), nx = noise(rng);  // in sequence, z first, for every compiler
+    f.update(truth + Eigen::Vector3d(nx, ny, nz));
     if (k > 60) {
       error += (f.state().head<3>() - truth).norm();
       ++n;
@@ -92,7 +93,8 @@ std::pair<double, double> against_kalman(const ParticleOptions& o, std::uint64_t
     kf.predict(1.0 / 30, o.q);
     const double t = k / 30.0;
     const Eigen::Vector3d truth(std::sin(0.52 * t), 0.5 * std::sin(1.04 * t), 5.0);
-    const Eigen::Vector3d z = truth + Eigen::Vector3d(noise(rng), noise(rng), noise(rng));
+    const double nz = noise(rng), ny = noise(rng), nx = noise(rng);  // in sequence, z first, for every compiler
+    const Eigen::Vector3d z = truth + Eigen::Vector3d(nx, ny, nz);
     pf.update(z);
     kf.update(z, o.r);
     if (k > 60) {

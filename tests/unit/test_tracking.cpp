@@ -477,7 +477,8 @@ LegErrors fly_a_turn(Track& track, std::vector<double>* manoeuvre_probability = 
     p += v * dt + 0.5 * a * dt * dt;
     v += a * dt;
     track.predict(dt);
-    track.update(p + Eigen::Vector3d(noise(rng), noise(rng), noise(rng)));
+    const double nz = noise(rng), ny = noise(rng), nx = noise(rng);  // in sequence, z first, for every compiler
+    track.update(p + Eigen::Vector3d(nx, ny, nz));
     const double e2 = (track.state().template head<3>() - p).squaredNorm();
     if (t >= 4.0 && t < 5.6) {
       turn_sq += e2, ++turn_n;
