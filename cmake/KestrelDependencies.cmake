@@ -18,7 +18,8 @@ kestrel_require(fmt libfmt-dev)
 kestrel_require(spdlog libspdlog-dev)
 kestrel_require(nlohmann_json nlohmann-json3-dev 3)
 kestrel_require(CLI11 libcli11-dev)
-# Header-only: Boost.Math's Student's t distribution for the CLI's confidence intervals.
+# Header-only: Boost.Math's Student's t distribution for the CLI's confidence intervals, and
+# Boost.Beast (with Asio) for the live view's WebSocket server.
 kestrel_require(Boost libboost-dev 1.74)
 kestrel_require(OpenCV libopencv-dev 4 COMPONENTS core imgproc imgcodecs calib3d videoio)
 # PCL 1.13 makes imported targets (pcl_common, pcl_filters, ...) for these components.

@@ -63,18 +63,21 @@ int run_command(const RunArgs& args) {
   // Before the graph loads (seconds, on a busy machine): a run stopped that early still ends
   // cleanly, with its report, instead of dying of the signal.
   install_signal_handlers();
-  RunArgs with_recorder = args;
+  RunArgs with_extras = args;
   if (!args.record.empty()) {
     // JSON strings are YAML strings: any path or pattern goes through quoted.
     nlohmann::json params = {{"file", args.record}};
     if (args.topics) params["topics"] = *args.topics;
-    with_recorder.fragments.push_back(
+    with_extras.fragments.push_back(
         {"--record", "nodes: [{id: recorder, type: recorder, params: " + params.dump() + "}]"});
   } else if (args.topics) {
     spdlog::error("--topics chooses what --record records; give --record FILE.mcap too");
     return kUsage;
   }
-  auto loaded = load_graph(with_recorder);
+  if (args.live)
+    with_extras.fragments.push_back(
+        {"--live", "nodes: [{id: live, type: foxglove_bridge, params: {port: " + std::to_string(*args.live) + "}}]"});
+  auto loaded = load_graph(with_extras);
   if (!loaded.graph) return kInvalidGraph;
   if (args.executor == "realtime") {
     loaded.graph->executor = ExecutorKind::realtime;

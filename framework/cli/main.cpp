@@ -34,6 +34,11 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("!--no-progress", run.progress, "no status line on the terminal");
   run_cmd->add_option("--record", run.record,
                       "record the run into FILE.mcap (ROS 2 messages; a `recorder` node is added, docs/recording.md)");
+  run_cmd
+      ->add_option("--live", run.live,
+                   "serve the run live on this port over the Foxglove WebSocket protocol (a `foxglove_bridge` node "
+                   "is added; open ws://HOST:PORT in Foxglove or Lichtblick, docs/recording.md)")
+      ->check(CLI::Range(0, 65535));
   run_cmd->add_option("--topics", run.topics,
                       "what --record records: topic patterns /NODE/PORT, '*' for all, '!PATTERN' to leave out "
                       "(default: every connection but point clouds)");

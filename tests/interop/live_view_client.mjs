@@ -1,0 +1,73 @@
+// Watches a kestrel run served with --live as Foxglove does: @foxglove/ws-protocol's client on a
+// `ws` WebSocket, every channel decoded from its advertised ros2msg schema by @foxglove/rosmsg and
+// @foxglove/rosmsg2-serialization. Subscribes to every channel whose topic matches one of the
+// patterns given, and exits once each has decoded a message and a Time frame has come. Prints a
+// JSON summary: {"serverInfo", "channels": [...], "received": {TOPIC: {count, schemaName, sample}},
+// "times", "firstTime", "lastTime"}.
+// Usage: node live_view_client.mjs ws://HOST:PORT REGEX [REGEX...]
+import wsProtocol from "@foxglove/ws-protocol"; // CommonJS: no named exports under ESM
+
+import { parse } from "@foxglove/rosmsg";
+import { MessageReader } from "@foxglove/rosmsg2-serialization";
+import WebSocket from "ws";
+
+const { FoxgloveClient } = wsProtocol;
+const [url, ...patterns] = process.argv.slice(2);
+const wanted = patterns.map((p) => new RegExp(p));
+const client = new FoxgloveClient({ ws: new WebSocket(url, [FoxgloveClient.SUPPORTED_SUBPROTOCOL]) });
+const summary = { serverInfo: null, channels: [], received: {}, times: 0, firstTime: null, lastTime: null };
+const bySubscription = new Map();
+const pending = new Set(wanted.map(String));
+
+const fail = (why) => {
+  console.error(`live_view_client: ${why}`);
+  console.error(`advertised: ${summary.channels.map((c) => c.topic).join(" ")}`);
+  console.error(`received: ${Object.keys(summary.received).join(" ")}`);
+  process.exit(1);
+};
+const bigintSafe = (_key, value) => (typeof value === "bigint" ? value.toString() : value);
+const done = () => {
+  if (pending.size > 0 || summary.times === 0) return;
+  console.log(JSON.stringify(summary, bigintSafe));
+  client.close();
+  process.exit(0);
+};
+
+client.on("error", (e) => fail(`error: ${e?.message ?? e}`));
+client.on("close", () => fail(`closed before every pattern got a message; still waiting for ${[...pending]}`));
+client.on("serverInfo", (info) => (summary.serverInfo = info));
+client.on("status", (s) => console.error(`status ${s.level}: ${s.message}`));
+client.on("advertise", (channels) => {
+  for (const c of channels) {
+    summary.channels.push({ id: c.id, topic: c.topic, encoding: c.encoding, schemaName: c.schemaName,
+                            schemaEncoding: c.schemaEncoding });
+    const match = wanted.find((w) => w.test(c.topic));
+    if (!match) continue;
+    if (c.encoding !== "cdr" || c.schemaEncoding !== "ros2msg") fail(`${c.topic}: ${c.encoding}/${c.schemaEncoding}`);
+    const reader = new MessageReader(parse(c.schema, { ros2: true }));
+    bySubscription.set(client.subscribe(c.id), { channel: c, reader, pattern: String(match) });
+  }
+});
+client.on("time", ({ timestamp }) => {
+  summary.times += 1;
+  if (summary.firstTime === null) summary.firstTime = timestamp;
+  summary.lastTime = timestamp;
+  done();
+});
+client.on("message", ({ subscriptionId, timestamp, data }) => {
+  const s = bySubscription.get(subscriptionId);
+  if (!s) fail(`a message for subscription ${subscriptionId}, which was never made`);
+  const bytes = new Uint8Array(data.buffer, data.byteOffset, data.byteLength);
+  const message = s.reader.readMessage(bytes);
+  const entry = (summary.received[s.channel.topic] ??= { count: 0, schemaName: s.channel.schemaName, sample: null });
+  entry.count += 1;
+  if (!entry.sample) {
+    // Big arrays (image and cloud bytes) are summarised by their length.
+    entry.sample = JSON.parse(JSON.stringify(message, (k, v) =>
+      v instanceof Uint8Array || (Array.isArray(v) && v.length > 16) ? { length: v.length } : bigintSafe(k, v)));
+    entry.sample.receive_time_ns = timestamp.toString();
+  }
+  pending.delete(s.pattern);
+  done();
+});
+setTimeout(() => fail(`timed out; still waiting for ${[...pending]}`), 120000);
