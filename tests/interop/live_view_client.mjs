@@ -45,7 +45,7 @@ client.on("advertise", (channels) => {
     if (!match) continue;
     if (c.encoding !== "cdr" || c.schemaEncoding !== "ros2msg") fail(`${c.topic}: ${c.encoding}/${c.schemaEncoding}`);
     const reader = new MessageReader(parse(c.schema, { ros2: true }));
-    bySubscription.set(client.subscribe(c.id), { channel: c, reader, pattern: String(match) });
+    bySubscription.set(client.subscribe(c.id), { channel: c, reader });
   }
 });
 client.on("time", ({ timestamp }) => {
@@ -67,7 +67,7 @@ client.on("message", ({ subscriptionId, timestamp, data }) => {
       v instanceof Uint8Array || (Array.isArray(v) && v.length > 16) ? { length: v.length } : bigintSafe(k, v)));
     entry.sample.receive_time_ns = timestamp.toString();
   }
-  pending.delete(s.pattern);
+  for (const w of wanted) if (w.test(s.channel.topic)) pending.delete(String(w));  // every pattern it matches
   done();
 });
 setTimeout(() => fail(`timed out; still waiting for ${[...pending]}`), 120000);
