@@ -9,6 +9,7 @@
 #include <kestrel/ros2/message_mapping.hpp>
 #include <kestrel/version.hpp>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "live_server.hpp"
@@ -61,14 +62,13 @@ class FoxgloveBridgeNode final : public Node {
   void process(Context& ctx) override {
     const Envelope& e = ctx.envelope(kIn.name);
     const auto at = static_cast<std::uint64_t>(std::max<std::int64_t>(0, e.published_at.count()));
-    if (at > last_time_ || !time_sent_) {
+    if (!last_time_ || at > *last_time_) {
       server_.publish_time(at);
       last_time_ = at;
-      time_sent_ = true;
     }
-    const std::vector<std::uint32_t>* ids = channels_of(ctx.log(), e);
-    if (!ids || std::ranges::none_of(*ids, [&](std::uint32_t id) { return server_.subscribed(id); })) return;
     const std::string topic = topic_of(e);
+    const std::vector<std::uint32_t>* ids = channels_of(ctx.log(), e, topic);
+    if (!ids || std::ranges::none_of(*ids, [&](std::uint32_t id) { return server_.subscribed(id); })) return;
     ros2::Encoded encoded = ros2::encode(e.type, e.payload.get(), topic);
     for (ros2::Ros2Message& m : encoded.messages) {
       const std::uint32_t id = ids->at(m.channel);
@@ -110,8 +110,7 @@ class FoxgloveBridgeNode final : public Node {
 
   // The channel ids of an output's ROS 2 channels, advertised the first time the output
   // publishes; nullptr for a type with no ROS 2 mapping (counted, and warned about once).
-  const std::vector<std::uint32_t>* channels_of(Logger& log, const Envelope& e) {
-    std::string topic = topic_of(e);
+  const std::vector<std::uint32_t>* channels_of(Logger& log, const Envelope& e, const std::string& topic) {
     if (auto it = by_output_.find(topic); it != by_output_.end()) return &it->second;
     if (!ros2::can_encode(e.type)) {
       if (unserved_types_.insert(std::string(e.type)).second)
@@ -132,7 +131,7 @@ class FoxgloveBridgeNode final : public Node {
                     .first;
       ids.push_back(known->second);
     }
-    return &by_output_.emplace(std::move(topic), std::move(ids)).first->second;
+    return &by_output_.emplace(topic, std::move(ids)).first->second;
   }
 
   BridgeConfig cfg_;
@@ -140,8 +139,8 @@ class FoxgloveBridgeNode final : public Node {
   std::map<std::string, std::vector<std::uint32_t>> by_output_;  // output topic -> its channels' ids
   std::map<std::string, std::uint32_t> channel_ids_;             // topic + schema -> channel id
   std::set<std::string> unserved_types_;
-  std::uint64_t unserved_ = 0, published_ = 0, last_time_ = 0;
-  bool time_sent_ = false;
+  std::uint64_t unserved_ = 0, published_ = 0;
+  std::optional<std::uint64_t> last_time_;  // of the last Time frame sent
 };
 KESTREL_REGISTER_NODE(FoxgloveBridgeNode)
 
