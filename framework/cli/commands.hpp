@@ -100,4 +100,7 @@ int inspect_command(const std::string& name);
 int mcap_info_command(const McapInfoArgs& args);
 int mcap_cat_command(const McapCatArgs& args);
 
+/// `kestrel devices`: V4L2 devices and serial ports, and which look like an oCamS.
+int devices_command();
+
 }  // namespace kestrel::cli

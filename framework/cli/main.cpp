@@ -131,6 +131,9 @@ int main(int argc, char** argv) {
   mcap_cat_cmd->add_option("--topic", mcap_cat.topics, "only this topic (repeatable; default: every topic)");
   mcap_cat_cmd->add_option("--limit", mcap_cat.limit, "print at most N messages");
 
+  auto* devices_cmd = app.add_subcommand(
+      "devices", "List V4L2 cameras and serial ports, with their formats, and which look like an oCamS");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -151,5 +154,6 @@ int main(int argc, char** argv) {
   if (*inspect_cmd) return inspect_command(inspect_name);
   if (*mcap_info_cmd) return mcap_info_command(mcap_info);
   if (*mcap_cat_cmd) return mcap_cat_command(mcap_cat);
+  if (*devices_cmd) return devices_command();
   return kUsage;
 }

@@ -69,6 +69,18 @@ inline Eigen::Quaterniond read_quaternion(CdrReader& r) {
   return Eigen::Quaterniond(w, x, y, z);
 }
 
+/// tf2_msgs/TFMessage holding one geometry_msgs/TransformStamped: `child`'s pose in `parent`.
+inline std::vector<std::uint8_t> tf_message(Time stamp, const std::string& parent, const std::string& child,
+                                            const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation) {
+  CdrWriter w;
+  w.sequence_length(1);
+  write_header(w, stamp, parent);
+  w.string(child);
+  write_xyz(w, position);
+  write_quaternion(w, orientation);
+  return w.take();
+}
+
 /// Checks that a decoded message used all its bytes (CDR pads to at most 3 more).
 inline void expect_end(const CdrReader& r, const char* type) {
   if (r.remaining() > 3) throw CdrError(std::to_string(r.remaining()) + " bytes left after a whole " + type);
@@ -89,6 +101,7 @@ TypeCodec detections_codec();
 TypeCodec tracks_codec();
 TypeCodec ground_truth_codec();
 TypeCodec vehicle_state_codec();
+TypeCodec imu_codec();
 std::vector<TypeCodec> control_codecs();  // setpoint, actuator command, attitude target, net fire and capture
 
 /// A decoder for types carried whole on one channel: `read` parses one message.

@@ -8,9 +8,9 @@ namespace {
 
 const std::vector<detail::TypeCodec>& codecs() {
   static const std::vector<detail::TypeCodec> table = [] {
-    std::vector<detail::TypeCodec> t = {detail::stereo_frame_codec(), detail::point_cloud_codec(),
-                                        detail::detections_codec(),   detail::tracks_codec(),
-                                        detail::ground_truth_codec(), detail::vehicle_state_codec()};
+    std::vector<detail::TypeCodec> t = {
+        detail::stereo_frame_codec(), detail::point_cloud_codec(),   detail::detections_codec(), detail::tracks_codec(),
+        detail::ground_truth_codec(), detail::vehicle_state_codec(), detail::imu_codec()};
     for (auto& c : detail::control_codecs()) t.push_back(c);
     return t;
   }();

@@ -1,12 +1,17 @@
 // kestrel.StereoFrame: /NODE/PORT/left and /right as sensor_msgs/msg/Image, each with its
 // sensor_msgs/msg/CameraInfo (".../camera_info"), as ROS 2 stereo drivers publish them. The
 // calibration goes in the camera infos' K and P (the right P holds Tx = -fx * baseline), the
-// frame index in the MCAP sequence of each message; replay pairs the four again by stamp.
+// frame index in the MCAP sequence of each message; replay pairs the four again by stamp. The
+// camera's mount travels in the channels' metadata and, for viewers, on /tf (parent -> "camera").
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstring>
 #include <kestrel/messages/stereo_frame.hpp>
 #include <limits>
 #include <map>
+#include <opencv2/core.hpp>
+#include <sstream>
 
 #include "fields.hpp"
 
@@ -14,13 +19,43 @@ namespace kestrel::ros2::detail {
 
 namespace {
 
-enum Part : std::size_t { kLeft, kRight, kLeftInfo, kRightInfo, kParts };
+enum Part : std::size_t { kLeft, kRight, kLeftInfo, kRightInfo, kParts, kTf = kParts };
 
-std::vector<ChannelSpec> channels(const std::string& topic) {
+const char* const kMount = "kestrel.mount";  // "PARENT x y z qw qx qy qz"
+
+std::vector<ChannelSpec> parts(const std::string& topic) {
   return {{topic + "/left", "sensor_msgs/msg/Image", false},
           {topic + "/right", "sensor_msgs/msg/Image", false},
           {topic + "/left/camera_info", "sensor_msgs/msg/CameraInfo", false},
           {topic + "/right/camera_info", "sensor_msgs/msg/CameraInfo", false}};
+}
+
+std::vector<ChannelSpec> channels(const std::string& topic) {
+  std::vector<ChannelSpec> out = parts(topic);
+  out.push_back({"/tf", "tf2_msgs/msg/TFMessage", true});
+  return out;
+}
+
+// Shortest decimal forms that read back to the same doubles.
+std::string mount_text(const msg::CameraMount& m) {
+  const auto& p = m.position;
+  const auto& q = m.orientation;
+  return fmt::format("{} {} {} {} {} {} {} {}", m.parent_frame, p.x(), p.y(), p.z(), q.w(), q.x(), q.y(), q.z());
+}
+
+msg::CameraMount read_mount(const std::string& text) {
+  std::istringstream in(text);
+  in.imbue(std::locale::classic());
+  msg::CameraMount m;
+  double v[7];
+  in >> m.parent_frame;
+  for (double& x : v) in >> x;
+  std::string rest;
+  if (!in || (in >> rest, !rest.empty()) || m.parent_frame.empty())
+    throw Error(std::string(kMount) + " '" + text + "' in a channel's metadata is not 'PARENT x y z qw qx qy qz'");
+  m.position = {v[0], v[1], v[2]};
+  m.orientation = Eigen::Quaterniond(v[3], v[4], v[5], v[6]);
+  return m;
 }
 
 const char* encoding_of(const cv::Mat& image) {
@@ -90,6 +125,9 @@ Encoded encode(const void* message, const std::string&) {
   out.messages.push_back({kRight, image(f.right, f.stamp), seq});
   out.messages.push_back({kLeftInfo, camera_info(f.calibration, f.stamp, false), seq});
   out.messages.push_back({kRightInfo, camera_info(f.calibration, f.stamp, true), seq});
+  out.messages.push_back(
+      {kTf, tf_message(f.stamp, f.mount.parent_frame, "camera", f.mount.position, f.mount.orientation), std::nullopt});
+  out.metadata[kMount] = mount_text(f.mount);
   return out;
 }
 
@@ -103,10 +141,10 @@ cv::Mat read_image(CdrReader& r, Time& stamp) {
   int type = 0;
   if (encoding == "mono8" || encoding == "8UC1")
     type = CV_8UC1;
-  else if (encoding == "bgr8" || encoding == "8UC3")
+  else if (encoding == "bgr8" || encoding == "rgb8" || encoding == "8UC3")
     type = CV_8UC3;
   else
-    throw CdrError("image encoding '" + encoding + "' is not read here (mono8 and bgr8 are)");
+    throw CdrError("image encoding '" + encoding + "' is not read here (mono8, bgr8 and rgb8 are)");
   const std::size_t row_bytes = static_cast<std::size_t>(width) * (type == CV_8UC1 ? 1 : 3);
   if (height > 1u << 15 || width > 1u << 15)
     throw CdrError("an image of " + std::to_string(width) + "x" + std::to_string(height));
@@ -116,6 +154,12 @@ cv::Mat read_image(CdrReader& r, Time& stamp) {
   cv::Mat m(static_cast<int>(height), static_cast<int>(width), type);
   for (std::uint32_t row = 0; row < height; ++row)
     std::memcpy(m.ptr(static_cast<int>(row)), data.data() + static_cast<std::size_t>(step) * row, row_bytes);
+  if (encoding == "rgb8") {  // kestrel's colour images are BGR, as OpenCV's
+    cv::Mat bgr(m.size(), m.type());
+    const int from_to[] = {0, 2, 1, 1, 2, 0};
+    cv::mixChannels(&m, 1, &bgr, 1, from_to, 3);
+    return bgr;
+  }
   return m;
 }
 
@@ -141,9 +185,9 @@ Info read_info(CdrReader& r, Time& stamp) {
 
 class StereoFrameDecoder final : public Decoder {
  public:
-  std::vector<ChannelSpec> inputs() const override { return channels(""); }
+  std::vector<ChannelSpec> inputs() const override { return parts(""); }
   std::shared_ptr<const void> feed(std::size_t input, std::span<const std::uint8_t> cdr, std::uint32_t sequence,
-                                   const ChannelMetadata&) override {
+                                   const ChannelMetadata& metadata) override {
     if (input >= kParts) throw Error("a stereo frame has no input " + std::to_string(input));
     CdrReader r(cdr);
     Time stamp{0};
@@ -154,6 +198,8 @@ class StereoFrameDecoder final : public Decoder {
       (input == kLeft ? p.left : p.right) = std::move(m);
       p.have[input] = true;
       p.sequence = sequence;
+      if (input == kLeft)
+        if (auto it = metadata.find(kMount); it != metadata.end()) p.mount = read_mount(it->second);
     } else {
       Info info = read_info(r, stamp);
       expect_end(r, "sensor_msgs/msg/CameraInfo");
@@ -176,6 +222,7 @@ class StereoFrameDecoder final : public Decoder {
     frame->calibration.cx = p.left_info.p[2];
     frame->calibration.cy = p.left_info.p[6];
     frame->calibration.baseline_m = p.right_info.p[0] != 0 ? -p.right_info.p[3] / p.right_info.p[0] : 0.0;
+    frame->mount = p.mount;
     pending_.erase(it);
     return frame;
   }
@@ -187,6 +234,7 @@ class StereoFrameDecoder final : public Decoder {
     cv::Mat left, right;
     Info left_info, right_info;
     std::uint32_t sequence = 0;
+    msg::CameraMount mount;  // a bag from another driver has none: the default level camera
   };
   // The parts of a frame arrive together in a kestrel file; in another bag they may interleave
   // with a few frames' worth of others. Older incomplete frames are dropped and counted.

@@ -32,15 +32,9 @@ Encoded encode(const void* message, const std::string& topic) {
   write_xyz(w, s.orientation.conjugate() * s.velocity);
   write_xyz(w, s.angular_velocity);
   for (int i = 0; i < 36; ++i) w.f64(0.0);
-  CdrWriter tf;
-  tf.sequence_length(1);
-  write_header(tf, s.stamp, "world");
-  tf.string(child);
-  write_xyz(tf, s.position);
-  write_quaternion(tf, s.orientation);
   Encoded out;
   out.messages.push_back({0, w.take(), std::nullopt});
-  out.messages.push_back({1, tf.take(), std::nullopt});
+  out.messages.push_back({1, tf_message(s.stamp, "world", child, s.position, s.orientation), std::nullopt});
   return out;
 }
 

@@ -6,14 +6,6 @@
 
 namespace kestrel {
 
-std::string output_topic(std::string_view node, std::string_view port) {
-  std::string topic = "/";
-  topic += node;
-  topic += '/';
-  topic += port;
-  return topic;
-}
-
 TopicSelection::TopicSelection(const std::string& patterns, std::vector<std::string> skip_types)
     : skip_types_(std::move(skip_types)) {
   std::string word;

@@ -1,14 +1,12 @@
 #pragma once
 // Which outputs a tap input takes (TapOptions in ports.hpp): topic patterns, as `kestrel run
 // --record FILE --topics PATTERNS` and the recorder's `topics` parameter give them.
+#include <kestrel/message.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace kestrel {
-
-/// The topic of an output: "/NODE/PORT", as MCAP channels and ROS 2 topics name it.
-std::string output_topic(std::string_view node, std::string_view port);
 
 class TopicSelection {
  public:

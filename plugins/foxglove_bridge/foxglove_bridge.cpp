@@ -93,7 +93,8 @@ class FoxgloveBridgeNode final : public Node {
          {"messages_sent", s.messages_sent},
          {"bytes_sent", s.bytes_sent},
          {"dropped", s.dropped},
-         {"unserved", unserved_}},
+         {"unserved", unserved_},
+         {"io_cpu_s", s.io_cpu_s}},
         fmt::format("Served {} channels on port {} to {} client(s) (at most {} at once): {} "
                     "messages sent, {} dropped from slow clients' queues.\n",
                     channel_ids_.size(), server_.port(), s.clients, s.max_clients, s.messages_sent, s.dropped));
@@ -102,12 +103,6 @@ class FoxgloveBridgeNode final : public Node {
   }
 
  private:
-  static std::string topic_of(const Envelope& e) {
-    std::string topic;
-    topic.append("/").append(e.source_node).append("/").append(e.source_port);
-    return topic;
-  }
-
   // The channel ids of an output's ROS 2 channels, advertised the first time the output
   // publishes; nullptr for a type with no ROS 2 mapping (counted, and warned about once).
   const std::vector<std::uint32_t>* channels_of(Logger& log, const Envelope& e, const std::string& topic) {

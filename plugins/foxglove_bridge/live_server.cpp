@@ -4,6 +4,8 @@
 #include <utility>  // before Asio, whose awaitable.hpp uses std::exchange without including it
 // clang-format on
 
+#include <time.h>
+
 #include <algorithm>
 #include <atomic>
 #include <boost/asio.hpp>
@@ -28,6 +30,12 @@ namespace websocket = beast::websocket;
 using tcp = asio::ip::tcp;
 
 namespace {
+
+std::int64_t thread_cpu_ns(clockid_t clock) {
+  timespec t{};
+  if (clock_gettime(clock, &t) != 0) return -1;
+  return static_cast<std::int64_t>(t.tv_sec) * 1'000'000'000 + t.tv_nsec;
+}
 
 Frame text_frame(const std::string& text) {
   Frame f;
@@ -72,6 +80,8 @@ struct LiveServer::Impl {
 
   std::atomic<std::uint64_t> clients{0}, open_clients{0}, max_clients{0}, rejected{0}, messages_sent{0}, bytes_sent{0},
       dropped{0};
+  clockid_t io_clock = -1;                  // the I/O thread's CPU clock, while it runs
+  std::atomic<std::int64_t> io_cpu_ns{-1};  // its CPU time, once it has ended
 
   void accept();
   void opened(const std::shared_ptr<Session>& s);
@@ -273,7 +283,12 @@ LiveServer::LiveServer(const LiveServerOptions& options) : impl_(std::make_uniqu
   if (!ec) s.acceptor.listen(asio::socket_base::max_listen_connections, ec);
   if (ec) throw Error("live view: cannot listen on " + where + ": " + ec.message());
   s.accept();
-  s.thread = std::thread([&s] { s.io.run(); });
+  s.thread = std::thread([&s] {
+    s.io.run();
+    s.io_cpu_ns = thread_cpu_ns(CLOCK_THREAD_CPUTIME_ID);
+  });
+  pthread_setname_np(s.thread.native_handle(), "kestrel-live");  // as top and perf show it
+  if (pthread_getcpuclockid(s.thread.native_handle(), &s.io_clock) != 0) s.io_clock = -1;
 }
 
 LiveServer::~LiveServer() { stop(); }
@@ -344,7 +359,15 @@ void LiveServer::stop() {
 
 LiveServerStats LiveServer::stats() const {
   const Impl& s = *impl_;
-  return {s.clients, s.max_clients, s.rejected, s.messages_sent, s.bytes_sent, s.dropped};
+  std::int64_t cpu = s.io_cpu_ns;
+  if (cpu < 0 && s.thread.joinable() && s.io_clock != -1) cpu = thread_cpu_ns(s.io_clock);
+  return {s.clients,
+          s.max_clients,
+          s.rejected,
+          s.messages_sent,
+          s.bytes_sent,
+          s.dropped,
+          std::max<std::int64_t>(cpu, 0) * 1e-9};
 }
 
 }  // namespace kestrel::foxglove

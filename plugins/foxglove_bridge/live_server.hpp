@@ -26,6 +26,7 @@ struct LiveServerStats {
   std::uint64_t messages_sent = 0;
   std::uint64_t bytes_sent = 0;
   std::uint64_t dropped = 0;  ///< data frames dropped from slow clients' queues
+  double io_cpu_s = 0.0;      ///< CPU time of the server's I/O thread so far (framing and sending)
 };
 
 class LiveServer {

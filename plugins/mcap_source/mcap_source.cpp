@@ -7,6 +7,7 @@
 
 #include <kestrel/messages/detections.hpp>
 #include <kestrel/messages/ground_truth.hpp>
+#include <kestrel/messages/imu.hpp>
 #include <kestrel/messages/point_cloud.hpp>
 #include <kestrel/messages/stereo_frame.hpp>
 #include <kestrel/messages/tracks.hpp>
@@ -19,7 +20,9 @@ namespace kestrel::replay {
 
 struct McapSourceConfig {
   std::string file;
-  std::string frame_topic, truth_topic, cloud_topic, detections_topic, tracks_topic, state_topic;
+  std::string frame_topic, truth_topic, cloud_topic, detections_topic, tracks_topic, state_topic, imu_topic;
+  // A ROS 2 bag's stereo topics, where they are not named after frame_topic.
+  std::string left_topic, right_topic, left_info_topic, right_info_topic;
   double rate_hz = 0.0;
 };
 
@@ -31,6 +34,7 @@ class McapSourceNode final : public Node {
   static constexpr Output<msg::Detections> kDetections{"detections"};
   static constexpr Output<msg::Tracks> kTracks{"tracks"};
   static constexpr Output<msg::VehicleState> kState{"state"};
+  static constexpr Output<msg::Imu> kImu{"imu"};
 
   static NodeSpec spec() {
     using C = McapSourceConfig;
@@ -38,12 +42,29 @@ class McapSourceNode final : public Node {
     c.required("file", &C::file).describe("the MCAP file replayed");
     c.param("frame_topic", &C::frame_topic)
         .describe("recorded StereoFrame output for `frame` (its /left, /right and camera infos); empty: none");
+    c.param("left_topic", &C::left_topic)
+        .describe(
+            "sensor_msgs/msg/Image topic of rectified left images for `frame`, in a bag whose topics are not "
+            "frame_topic/left, ... (/stereo/left/image_rect); with right_topic, left_info_topic and right_info_topic");
+    c.param("right_topic", &C::right_topic).describe("rectified right images for `frame`, with left_topic");
+    c.param("left_info_topic", &C::left_info_topic)
+        .describe("sensor_msgs/msg/CameraInfo of the left camera for `frame` (/stereo/left/camera_info)");
+    c.param("right_info_topic", &C::right_info_topic)
+        .describe("sensor_msgs/msg/CameraInfo of the right camera for `frame`; its P gives the baseline");
+    c.rule("left_topic, right_topic, left_info_topic and right_info_topic are set together, instead of frame_topic",
+           {"left_topic", "right_topic", "left_info_topic", "right_info_topic", "frame_topic"}, [](const C& k) {
+             const int set = !k.left_topic.empty() + !k.right_topic.empty() + !k.left_info_topic.empty() +
+                             !k.right_info_topic.empty();
+             return set == 0 || (set == 4 && k.frame_topic.empty());
+           });
     c.param("truth_topic", &C::truth_topic).describe("kestrel_msgs/msg/GroundTruth topic for `truth`; empty: none");
     c.param("cloud_topic", &C::cloud_topic).describe("sensor_msgs/msg/PointCloud2 topic for `cloud`; empty: none");
     c.param("detections_topic", &C::detections_topic)
         .describe("kestrel_msgs/msg/Detections topic for `detections`; empty: none");
     c.param("tracks_topic", &C::tracks_topic).describe("kestrel_msgs/msg/Tracks topic for `tracks`; empty: none");
     c.param("state_topic", &C::state_topic).describe("nav_msgs/msg/Odometry topic for `state`; empty: none");
+    c.param("imu_topic", &C::imu_topic)
+        .describe("sensor_msgs/msg/Imu topic for `imu` (with its /mag MagneticField where recorded); empty: none");
     c.param("rate_hz", &C::rate_hz)
         .with_unit("Hz")
         .range(0.0, 1e6)
@@ -61,6 +82,7 @@ class McapSourceNode final : public Node {
         .output(kDetections, "detections")
         .output(kTracks, "tracks")
         .output(kState, "vehicle states")
+        .output(kImu, "inertial measurements")
         .config(std::move(c));
   }
 
@@ -95,12 +117,18 @@ class McapSourceNode final : public Node {
     auto add = [&](const char* port, std::string_view type, const std::string& topic) {
       if (!topic.empty()) out.push_back({port, std::string(type), topic});
     };
+    if (!c.left_topic.empty())
+      out.push_back({"frame",
+                     std::string(MessageTraits<msg::StereoFrame>::name),
+                     c.left_topic,
+                     {c.left_topic, c.right_topic, c.left_info_topic, c.right_info_topic}});
     add("frame", MessageTraits<msg::StereoFrame>::name, c.frame_topic);
     add("truth", MessageTraits<msg::GroundTruth>::name, c.truth_topic);
     add("cloud", MessageTraits<msg::PointCloud>::name, c.cloud_topic);
     add("detections", MessageTraits<msg::Detections>::name, c.detections_topic);
     add("tracks", MessageTraits<msg::Tracks>::name, c.tracks_topic);
     add("state", MessageTraits<msg::VehicleState>::name, c.state_topic);
+    add("imu", MessageTraits<msg::Imu>::name, c.imu_topic);
     if (out.empty()) throw Error("no port has a topic: set frame_topic, truth_topic, ... to what to replay");
     return out;
   }
@@ -118,6 +146,7 @@ class McapSourceNode final : public Node {
     if (port == "cloud") return send(ctx, kCloud, std::move(message));
     if (port == "detections") return send(ctx, kDetections, std::move(message));
     if (port == "tracks") return send(ctx, kTracks, std::move(message));
+    if (port == "imu") return send(ctx, kImu, std::move(message));
     send(ctx, kState, std::move(message));
   }
 

@@ -17,8 +17,11 @@ RecordedChannels::RecordedChannels(const std::filesystem::path& file, std::vecto
     decoders_.push_back(ros2::make_decoder(port.kestrel_type));
     if (!decoders_.back()) throw Error("messages of type " + port.kestrel_type + " cannot be replayed");
     const auto inputs = decoders_.back()->inputs();
+    if (!port.input_topics.empty() && port.input_topics.size() != inputs.size())
+      throw Error("port '" + port.port + "' needs " + std::to_string(inputs.size()) + " topics, not " +
+                  std::to_string(port.input_topics.size()));
     for (std::size_t i = 0; i < inputs.size(); ++i) {
-      const std::string topic = port.topic + inputs[i].topic;
+      const std::string topic = port.input_topics.empty() ? port.topic + inputs[i].topic : port.input_topics[i];
       bool found = false;
       std::set<std::string> other_types;
       for (const auto& [id, channel] : summary.channels) {
@@ -34,6 +37,7 @@ RecordedChannels::RecordedChannels(const std::filesystem::path& file, std::vecto
         topics_.push_back(topic);
         if (counts[id] > busiest) busiest = counts[id];
       }
+      if (!found && inputs[i].optional && other_types.empty()) continue;
       if (!found) {
         std::string have;
         for (const auto& t : other_types) have += (have.empty() ? "" : ", ") + t;

@@ -19,6 +19,10 @@ struct ReplayedPort {
   std::string port;          ///< the node's output
   std::string kestrel_type;  ///< "kestrel.StereoFrame"
   std::string topic;         ///< the recorded output's topic, "/camera/frame"
+  /// The full topic of each of the decoder's inputs, in its order, where they are not named after
+  /// `topic` (a ROS 2 bag's /stereo/left/image_rect and /stereo/left/camera_info); empty: topic +
+  /// each input's suffix.
+  std::vector<std::string> input_topics = {};
 };
 
 class RecordedChannels {

@@ -15,16 +15,6 @@ mcap::WriterOptions writer_options(const RecordingOptions& o) {
   return w;
 }
 
-std::string topic_of(const Envelope& e) {
-  std::string topic;
-  topic.reserve(e.source_node.size() + e.source_port.size() + 2);
-  topic.append("/").append(e.source_node).append("/").append(e.source_port);
-  return topic;
-}
-
-}  // namespace
-
-namespace {
 // As --report does, the file's folder is made when it is missing.
 const std::filesystem::path& with_folder(const std::filesystem::path& file) {
   std::error_code ec;

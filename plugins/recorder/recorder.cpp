@@ -5,13 +5,13 @@
 #include <fmt/format.h>
 
 #include <fstream>
+#include <kestrel/mcap/write_queue.hpp>
 #include <kestrel/plugin.hpp>
 #include <set>
 #include <sstream>
 #include <thread>
 
 #include "mcap_recording.hpp"
-#include "write_queue.hpp"
 
 namespace kestrel::recorder {
 
@@ -147,7 +147,7 @@ class RecorderNode final : public Node {
   RecorderConfig cfg_;
   McapRecording recording_;
   bool realtime_;
-  WriteQueue<Envelope> queue_;
+  mcap::WriteQueue<Envelope> queue_;
   std::thread writer_;
   std::string writer_error_;  // set by the writer thread, read after it joined
   bool metadata_written_ = false;

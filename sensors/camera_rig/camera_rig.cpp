@@ -21,6 +21,31 @@ geometry::CameraPose CameraRigConfig::pose(const msg::VehicleState* vehicle) con
   return geometry::camera_on_body(vehicle->position, vehicle->orientation, camera_offset_m);
 }
 
+msg::CameraMount mount_on_vehicle(const std::string& frame, const Eigen::Vector3d& position,
+                                  const Eigen::Vector3d& rpy_deg) {
+  const Eigen::Vector3d r = rpy_deg * M_PI / 180.0;
+  const Eigen::Quaterniond turn = Eigen::AngleAxisd(r.z(), Eigen::Vector3d::UnitZ()) *
+                                  Eigen::AngleAxisd(r.y(), Eigen::Vector3d::UnitY()) *
+                                  Eigen::AngleAxisd(r.x(), Eigen::Vector3d::UnitX());
+  msg::CameraMount m;
+  m.parent_frame = frame;
+  m.position = position;
+  m.orientation = (turn * Eigen::Quaterniond(geometry::body_from_camera())).normalized();
+  return m;
+}
+
+msg::CameraMount CameraRigConfig::mount(const std::string* vehicle_frame) const {
+  msg::CameraMount m;
+  if (vehicle_frame) {
+    m = mount_on_vehicle(*vehicle_frame, camera_offset_m);
+  } else {
+    const geometry::CameraPose fixed = pose(nullptr);
+    m.position = fixed.position_world;
+    m.orientation = Eigen::Quaterniond(fixed.world_from_camera());
+  }
+  return m;
+}
+
 bool CameraRigConfig::in_view(const Eigen::Vector3d& p) const {
   return geometry::in_view(calibration(), min_depth_m, max_depth_m, p);
 }

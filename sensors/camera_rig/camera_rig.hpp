@@ -6,6 +6,7 @@
 // one for the other by changing the node's type, and both see the world alike.
 #include <Eigen/Core>
 #include <kestrel/config_spec.hpp>
+#include <string>
 #include <kestrel/geometry/frames.hpp>
 #include <kestrel/messages/ground_truth.hpp>
 #include <kestrel/messages/stereo_frame.hpp>
@@ -30,12 +31,32 @@ struct CameraRigConfig {
   /// Where the camera is: on the vehicle at `vehicle` (mounted at camera_offset_m), or, without
   /// one, at camera_position_m looking along camera_yaw_deg.
   geometry::CameraPose pose(const msg::VehicleState* vehicle) const;
+  /// Where the camera stands for viewers: at camera_offset_m in the body frame `vehicle_frame`
+  /// of the vehicle carrying it, or, without one, fixed in the world.
+  msg::CameraMount mount(const std::string* vehicle_frame) const;
   /// True when a camera-frame point is within the depth range and images inside the picture.
   bool in_view(const Eigen::Vector3d& p_camera) const;
   /// The intruders of `truth` as this camera sees them at `stamp`: moved to that time with their
   /// velocity, in its frame, with in_view set.
   msg::GroundTruth seen(const msg::GroundTruth& truth, Time stamp, const geometry::CameraPose& camera) const;
 };
+
+/// A camera mounted on a vehicle: at `position` (m) in its body frame `frame`, looking along the
+/// body's x axis turned by roll, pitch and yaw (`rpy_deg`, about x, y, z in that order).
+msg::CameraMount mount_on_vehicle(const std::string& frame, const Eigen::Vector3d& position,
+                                  const Eigen::Vector3d& rpy_deg = Eigen::Vector3d::Zero());
+
+/// Declares a real camera's mount (mount_frame, mount_position_m, mount_rpy_deg), as
+/// mount_on_vehicle() takes it, bound to the three fields of Config.
+template <class Config>
+void declare_camera_mount(ConfigSpec<Config>& c, std::string Config::*frame, Eigen::Vector3d Config::*position,
+                          Eigen::Vector3d Config::*rpy_deg) {
+  c.param("mount_frame", frame).describe("frame carrying the camera (a vehicle's node id, or world), for /tf");
+  c.param("mount_position_m", position).with_unit("m").describe("left optical centre in that frame");
+  c.param("mount_rpy_deg", rpy_deg)
+      .with_unit("deg")
+      .describe("turn of the camera from looking along the frame's x: roll, pitch, yaw");
+}
 
 /// Declares the CameraRigConfig fields of `group` in c, with the defaults `group` has in a
 /// default-constructed Config.

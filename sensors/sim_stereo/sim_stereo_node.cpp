@@ -24,6 +24,7 @@ struct SimStereoConfig {
   bool color = false;
   std::int64_t supersample = 1;
   SceneOptions scene;
+  std::string mount_frame = "hunter";
 };
 
 class SimStereo final : public Node {
@@ -39,6 +40,10 @@ class SimStereo final : public Node {
     sensors::declare_camera_rig(c, &C::rig);
     c.param("noise_sigma", &C::noise_sigma).range(0.0, 50.0).with_unit("grey levels").describe("Gaussian image noise");
     c.param("color", &C::color).describe("publish BGR images instead of 8-bit grey");
+    c.param("mount_frame", &C::mount_frame)
+        .describe(
+            "frame of the vehicle carrying the camera, when `pose` is connected: the id of the node publishing its "
+            "state, which names its /tf frame in recordings and the live view");
     c.param("supersample", &C::supersample)
         .range(1, 4)
         .describe(
@@ -123,6 +128,7 @@ class SimStereo final : public Node {
     frame.left = noise_.apply(left, ctx.rng()());
     frame.right = noise_.apply(right, ctx.rng()());
     frame.calibration = calibration_;
+    frame.mount = rig_.mount(vehicle ? &mount_frame_ : nullptr);
     ctx.publish(kTruth, std::move(truth));
     ctx.publish(kFrame, std::move(frame));
   }
@@ -143,6 +149,7 @@ class SimStereo final : public Node {
  private:
   SimStereo(NodeInit& init, const SimStereoConfig& cfg)
       : rig_(cfg.rig),
+        mount_frame_(cfg.mount_frame),
         noise_(cfg.noise_sigma, cfg.color),
         scene_(scene_options(cfg)),
         band_near_m_(cfg.scene.clutter_layout == ClutterLayout::band && cfg.scene.clutter_count > 0
@@ -171,6 +178,7 @@ class SimStereo final : public Node {
   }
 
   sensors::CameraRigConfig rig_;
+  std::string mount_frame_;
   SensorNoise noise_;
   WorldScene scene_;
   double band_near_m_;

@@ -8,7 +8,10 @@ needs an entry: a new graph without one fails its test.
   outcomes.py duration GRAPH              the run length (s) for GRAPH's shortened run
   outcomes.py check GRAPH REPORT_JSON S [LIVE_REPORT_JSON]
                                           checks the report of an S-second run; exit 1 on failure
-  outcomes.py recorded GRAPH              the graph to record first for a replay graph (or nothing)
+  outcomes.py recorded GRAPH              for a replay graph: the graph to record first, then its
+                                          --set lines ("live KEY FILE", "replay KEY FILE")
+  outcomes.py hardware GRAPH              for a graph that needs a device: what its run must say
+                                          without one (or nothing)
 
 In the checks, `d` is the report's "detection" section, `t` its "tracking" section, `s` the run
 length in seconds and `frames` the camera frames in it (30 FPS).
@@ -52,9 +55,26 @@ ONE_TARGET = [
      "filtering averages the detections' noise down"),
 ]
 
-# Graphs that replay a recording: the graph whose shortened run is recorded first (the live run),
-# and the replay's report is checked with `live` set to the live run's report.
-RECORDED_FROM = {"mcap_replay_detection": "paper_detection"}
+# Graphs that replay a recording: the graph whose shortened run is recorded first (the live run,
+# with --record run.mcap), the files its nodes write there ("live" sets) and the files the replay
+# reads ("replay" sets), both relative to the live run's folder. The replay's report is checked
+# with `live` set to the live run's report.
+RECORDED_FROM = {
+    "mcap_replay_detection": ("paper_detection", [("replay", "replay.file", "run.mcap")]),
+    "ocams_replay_detection": ("ocams_rehearsal", [("live", "emulator.raw_file", "raw.mcap"),
+                                                   ("replay", "replay.file", "raw.mcap"),
+                                                   ("replay", "truth.file", "run.mcap")]),
+}
+
+# Graphs for devices the test machines do not have: validated, then run, which must fail with
+# exit code 1 and say this.
+NEEDS_HARDWARE = {"ocams_detection": "no oCamS found"}
+
+# The oCamS's GRBG filter samples one colour a pixel and demosaicing interpolates the others: at
+# most a pixel of smoothing at the silhouette's edge, 5.0 / 304 = 0.016 m sideways at 5 m, and a
+# small part of a pixel in disparity, measured over the whole object.
+RAW_REPLAY_LATERAL_M = 5.0 / 304.0
+RAW_REPLAY_DEPTH_M = 0.1 * 5.0**2 / (304.0 * 0.12)  # a tenth of a pixel of disparity at 5 m
 
 OUTCOMES = {
     "paper_detection": (2.0, DETECTION),
@@ -62,6 +82,24 @@ OUTCOMES = {
         ("d == live['detection']", "the replayed frames and truth give exactly the live run's figures"),
         ("r['replay']['published'] == 2 * frames", "every recorded frame and truth is replayed"),
     ]),
+    # The paper's scene with the rendered frames also passed through the oCamS's raw format: the
+    # chain runs on the rendered frames, as paper_detection, and the emulator packs every frame.
+    "ocams_rehearsal": (2.0, DETECTION + [
+        ("r['emulator']['frames'] == frames", "every rendered frame packed as the oCamS sends it"),
+    ]),
+    # The rehearsal's raw frames through ocams_replay (unpack, demosaic, rectify) into the chain:
+    # the detections of the rendered graph, to what the colour filter changes.
+    "ocams_replay_detection": (2.0, DETECTION + [
+        ("r['replay']['published'] == r['replay']['recorded'] == frames", "every raw frame replayed"),
+        ("(d['tp'], d['fp'], d['fn']) == (live['detection']['tp'], live['detection']['fp'], live['detection']['fn'])",
+         "the rendered graph's detections, frame for frame"),
+        (f"abs(d['rmse_m']['x'] - live['detection']['rmse_m']['x']) <= {RAW_REPLAY_LATERAL_M:.4f}"
+         f" and abs(d['rmse_m']['y'] - live['detection']['rmse_m']['y']) <= {RAW_REPLAY_LATERAL_M:.4f}",
+         "sideways, within a pixel of the rendered graph's"),
+        (f"abs(d['rmse_m']['z'] - live['detection']['rmse_m']['z']) <= {RAW_REPLAY_DEPTH_M:.4f}",
+         "in depth, within a tenth of a pixel of disparity of the rendered graph's"),
+    ]),
+    "ocams_detection": (2.0, []),
     "paper_tracking": (2.0, DETECTION + TRACKING + ONE_TARGET),
     # The same contract as the Kalman tracker (docs/tracking.md).
     "paper_tracking_particle": (2.0, DETECTION + TRACKING + ONE_TARGET),
@@ -146,7 +184,14 @@ def main(argv):
         print(OUTCOMES[argv[2]][0])
         return 0
     if len(argv) == 3 and argv[1] == "recorded":
-        print(RECORDED_FROM.get(argv[2], ""))
+        if argv[2] in RECORDED_FROM:
+            graph, sets = RECORDED_FROM[argv[2]]
+            print(graph)
+            for which, key, file in sets:
+                print(which, key, file)
+        return 0
+    if len(argv) == 3 and argv[1] == "hardware":
+        print(NEEDS_HARDWARE.get(argv[2], ""))
         return 0
     if len(argv) in (5, 6) and argv[1] == "check":
         graph, report_file, s = argv[2], argv[3], float(argv[4])

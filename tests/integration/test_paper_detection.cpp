@@ -9,22 +9,15 @@
 #include <filesystem>
 #include <fstream>
 
+#include "built_plugins.hpp"
 #include "kestrel/runtime/graph.hpp"
-#include "kestrel/runtime/plugin_host.hpp"
 #include "kestrel/runtime/run.hpp"
 
 using namespace kestrel;
 
 namespace {
 
-PluginHost& plugins() {
-  static PluginHost* host = [] {
-    auto* h = new PluginHost();
-    h->load_search_path();
-    return h;
-  }();
-  return *host;
-}
+PluginHost& plugins() { return kestrel::testing::built_plugins(); }
 
 RunResult run_paper_graph(double duration, const std::vector<std::string>& overrides,
                           const std::string& report_dir = {}) {

@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include "built_plugins.hpp"
 #include "kestrel/mcap/reader.hpp"
 #include "kestrel/runtime/graph.hpp"
-#include "kestrel/runtime/plugin_host.hpp"
 #include "kestrel/runtime/run.hpp"
 
 using namespace kestrel;
@@ -16,14 +16,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-PluginHost& plugins() {
-  static PluginHost* host = [] {
-    auto* h = new PluginHost();
-    h->load_search_path();
-    return h;
-  }();
-  return *host;
-}
+PluginHost& plugins() { return kestrel::testing::built_plugins(); }
 
 RunResult record(const fs::path& file, double duration, const std::string& extra_params = "",
                  const std::string& executor = "lockstep") {

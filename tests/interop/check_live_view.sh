@@ -2,7 +2,8 @@
 # Interop (CTest label `interop`): `kestrel run --live` watched by @foxglove/ws-protocol's client,
 # as Foxglove watches it. The closed loop, rendered camera and all, runs in realtime; the client
 # sees the `time` capability and Time frames, lists the channels, subscribes to the cloud, the
-# markers and the hunter's odometry, and decodes each from its advertised ros2msg schema. Then the
+# markers and the hunter's odometry, and decodes each from its advertised ros2msg schema; /tf
+# places both vehicles in the world and the camera on the hunter. Then the
 # run is stopped with SIGINT and must end cleanly with the bridge's figures in its report.
 # Every topic docs/foxglove-layout.json's 3D panel shows must come through too, and its image
 # must be advertised, so that the layout stays true.
@@ -37,6 +38,7 @@ for t in sorted(topics): print(f"^{t}$")
 PY
 )
 node "$work/node/live_view_client.mjs" "ws://127.0.0.1:$port" '/cloud$|/filtered$' '/markers$' '^/hunter/odometry$' \
+  'tf:world>hunter' 'tf:hunter>camera' \
   "${layout_topics[@]}" > "$out/client.json"
 kill -INT $pid
 wait $pid
@@ -69,6 +71,7 @@ markers = [t for t, e in got.items() if e["schemaName"] == "visualization_msgs/m
 check(markers, "markers decoded")
 odom = got.get("/hunter/odometry")
 check(odom and odom["sample"]["child_frame_id"] == "hunter", "the hunter's odometry decoded, child frame hunter")
+check({"world>hunter", "hunter>camera"} <= set(c["transforms"]), "/tf places the hunter and its camera")
 live = r["live"]
 check(live["clients"] >= 1 and live["messages_sent"] >= 3, "the report counts the client and what it was sent")
 print(f"check_live_view: port {live['port']}, {len(c['channels'])} channels, received "

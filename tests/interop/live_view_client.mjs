@@ -1,10 +1,13 @@
 // Watches a kestrel run served with --live as Foxglove does: @foxglove/ws-protocol's client on a
 // `ws` WebSocket, every channel decoded from its advertised ros2msg schema by @foxglove/rosmsg and
 // @foxglove/rosmsg2-serialization. Subscribes to every channel whose topic matches one of the
-// patterns given, and exits once each has decoded a message and a Time frame has come. Prints a
-// JSON summary: {"serverInfo", "channels": [...], "received": {TOPIC: {count, schemaName, sample}},
+// patterns given, and exits once each has decoded a message and a Time frame has come. A pattern
+// "tf:PARENT>CHILD" waits for that transform on /tf instead. Prints a JSON summary: {"serverInfo",
+// "channels": [...], "received": {TOPIC: {count, schemaName, sample}}, "transforms": ["PARENT>CHILD"],
 // "times", "firstTime", "lastTime"}.
-// Usage: node live_view_client.mjs ws://HOST:PORT REGEX [REGEX...]
+// With WATCH_SECONDS set, it stays subscribed that long before it prints, as a viewer left open
+// (docs/benchmarks.md measures the chain's cost so).
+// Usage: [WATCH_SECONDS=S] node live_view_client.mjs ws://HOST:PORT PATTERN [PATTERN...]
 import wsProtocol from "@foxglove/ws-protocol"; // CommonJS: no named exports under ESM
 
 import { parse } from "@foxglove/rosmsg";
@@ -13,11 +16,14 @@ import WebSocket from "ws";
 
 const { FoxgloveClient } = wsProtocol;
 const [url, ...patterns] = process.argv.slice(2);
-const wanted = patterns.map((p) => new RegExp(p));
+const wantedTransforms = new Set(patterns.filter((p) => p.startsWith("tf:")).map((p) => p.slice(3)));
+const wanted = patterns.filter((p) => !p.startsWith("tf:")).map((p) => new RegExp(p));
+if (wantedTransforms.size > 0) wanted.push(/^\/tf$/);
 const client = new FoxgloveClient({ ws: new WebSocket(url, [FoxgloveClient.SUPPORTED_SUBPROTOCOL]) });
-const summary = { serverInfo: null, channels: [], received: {}, times: 0, firstTime: null, lastTime: null };
+const summary = { serverInfo: null, channels: [], received: {}, transforms: [], times: 0, firstTime: null,
+                  lastTime: null };
 const bySubscription = new Map();
-const pending = new Set(wanted.map(String));
+const pending = new Set([...wanted.map(String), ...[...wantedTransforms].map((t) => `tf:${t}`)]);
 
 const fail = (why) => {
   console.error(`live_view_client: ${why}`);
@@ -26,8 +32,10 @@ const fail = (why) => {
   process.exit(1);
 };
 const bigintSafe = (_key, value) => (typeof value === "bigint" ? value.toString() : value);
+const started = Date.now();
+const watchMs = 1000 * Number(process.env.WATCH_SECONDS ?? 0);
 const done = () => {
-  if (pending.size > 0 || summary.times === 0) return;
+  if (pending.size > 0 || summary.times === 0 || Date.now() - started < watchMs) return;
   console.log(JSON.stringify(summary, bigintSafe));
   client.close();
   process.exit(0);
@@ -68,6 +76,12 @@ client.on("message", ({ subscriptionId, timestamp, data }) => {
     entry.sample.receive_time_ns = timestamp.toString();
   }
   for (const w of wanted) if (w.test(s.channel.topic)) pending.delete(String(w));  // every pattern it matches
+  if (s.channel.schemaName === "tf2_msgs/msg/TFMessage")
+    for (const t of message.transforms) {
+      const pair = `${t.header.frame_id}>${t.child_frame_id}`;
+      if (!summary.transforms.includes(pair)) summary.transforms.push(pair);
+      pending.delete(`tf:${pair}`);
+    }
   done();
 });
-setTimeout(() => fail(`timed out; still waiting for ${[...pending]}`), 120000);
+setTimeout(() => fail(`timed out; still waiting for ${[...pending]}`), 120000 + watchMs);

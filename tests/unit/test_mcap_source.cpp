@@ -8,6 +8,7 @@
 #include <kestrel/messages/stereo_frame.hpp>
 
 #include "kestrel/mcap/writer.hpp"
+#include "kestrel/ros2/cdr.hpp"
 #include "kestrel/ros2/definitions.hpp"
 #include "kestrel/ros2/message_mapping.hpp"
 #include "recorded_channels.hpp"
@@ -41,6 +42,17 @@ class TestRecording {
       writer_.write_message(channels_[key], t, t, m.cdr, m.sequence);
     }
   }
+  // One message of a ROS 2 type on a topic of any name, as another driver's bag holds it.
+  void write_raw(const std::string& topic, const std::string& schema_name, const std::vector<std::uint8_t>& cdr,
+                 std::uint64_t t) {
+    if (!channels_.count(topic)) {
+      const std::string& text = ros2::schema_text(schema_name);
+      const auto schema =
+          writer_.add_schema(schema_name, "ros2msg", {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
+      channels_[topic] = writer_.add_channel(schema, topic, "cdr", {});
+    }
+    writer_.write_message(channels_[topic], t, t, cdr, 0);
+  }
   void finish() { writer_.finish(); }
 
  private:
@@ -63,6 +75,44 @@ msg::StereoFrame frame(std::uint64_t index, std::int64_t stamp_ns) {
   f.right = cv::Mat(2, 3, CV_8UC1, cv::Scalar(static_cast<double>(index + 1)));
   f.calibration = {3, 2, 300.0, 300.0, 1.0, 1.0, 0.12};
   return f;
+}
+
+// sensor_msgs/msg/Image and CameraInfo as a ROS 2 stereo driver writes them: stamp 1.25 s,
+// frame "stereo", a colour image in rgb8 whose pixel k is (k, 10 k, 20 k) + `offset`.
+std::vector<std::uint8_t> driver_image(int offset) {
+  ros2::CdrWriter w;
+  w.i32(1);
+  w.u32(250'000'000);
+  w.string("stereo");
+  w.u32(2);  // height
+  w.u32(3);  // width
+  w.string("rgb8");
+  w.u8(0);
+  w.u32(12);  // step: 9 bytes of pixels and 3 of padding
+  std::vector<std::uint8_t> data(24, 0);
+  for (int k = 0; k < 6; ++k)
+    for (int c = 0; c < 3; ++c)
+      data[static_cast<std::size_t>((k / 3) * 12 + (k % 3) * 3 + c)] =
+          static_cast<std::uint8_t>(k * (c == 0 ? 1 : 10 * c) + offset);
+  w.bytes(data);
+  return w.take();
+}
+std::vector<std::uint8_t> driver_camera_info(double tx) {
+  ros2::CdrWriter w;
+  w.i32(1);
+  w.u32(250'000'000);
+  w.string("stereo");
+  w.u32(2);
+  w.u32(3);
+  w.string("plumb_bob");
+  w.sequence_length(5);
+  for (int i = 0; i < 5; ++i) w.f64(i == 0 ? -0.1 : 0.0);  // of the raw images; P is the rectified camera
+  for (double v : {310.0, 0.0, 1.0, 0.0, 310.0, 0.5, 0.0, 0.0, 1.0}) w.f64(v);
+  for (double v : {1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0}) w.f64(v);
+  for (double v : {300.0, 0.0, 1.5, tx, 0.0, 300.0, 0.75, 0.0, 0.0, 0.0, 1.0, 0.0}) w.f64(v);
+  for (int i = 0; i < 6; ++i) w.u32(0);
+  w.boolean(false);
+  return w.take();
 }
 
 fs::path file(const std::string& name) {
@@ -100,6 +150,41 @@ TEST(RecordedChannels, ReplaysEachPortInTheWindowsAskedForAtTheRecordedRate) {
   EXPECT_EQ(got.size(), 4u);  // truths 2 to 5
   EXPECT_EQ(got.back().second, 5.0);
   EXPECT_EQ(channels.unpaired(), 0u);
+}
+
+TEST(RecordedChannels, AnotherDriversStereoTopicsArePairedIntoAFrame) {
+  const auto f = file("driver.mcap");
+  {
+    TestRecording rec(f);
+    rec.write_raw("/stereo/right/camera_info", "sensor_msgs/msg/CameraInfo", driver_camera_info(-300.0 * 0.12), 5);
+    rec.write_raw("/stereo/left/image_rect_color", "sensor_msgs/msg/Image", driver_image(0), 6);
+    rec.write_raw("/stereo/left/camera_info", "sensor_msgs/msg/CameraInfo", driver_camera_info(0.0), 7);
+    rec.write_raw("/stereo/right/image_rect_color", "sensor_msgs/msg/Image", driver_image(1), 8);
+    rec.finish();
+  }
+  RecordedChannels channels(f, {{"frame",
+                                 "kestrel.StereoFrame",
+                                 "/stereo/left/image_rect_color",
+                                 {"/stereo/left/image_rect_color", "/stereo/right/image_rect_color",
+                                  "/stereo/left/camera_info", "/stereo/right/camera_info"}}});
+  std::shared_ptr<const msg::StereoFrame> got;
+  channels.replay(0, 100, [&](std::size_t, std::shared_ptr<const void> m) {
+    got = std::static_pointer_cast<const msg::StereoFrame>(m);
+  });
+  ASSERT_TRUE(got);
+  EXPECT_EQ(got->stamp, Time(1'250'000'000));
+  ASSERT_EQ(got->left.type(), CV_8UC3);
+  ASSERT_EQ(got->left.size(), cv::Size(3, 2));
+  EXPECT_EQ(got->left.at<cv::Vec3b>(1, 2), cv::Vec3b(100, 50, 5));  // pixel 5 (5, 50, 100) as BGR, padding skipped
+  EXPECT_EQ(got->right.at<cv::Vec3b>(0, 0), cv::Vec3b(1, 1, 1));
+  EXPECT_EQ(got->calibration.fx, 300.0);
+  EXPECT_EQ(got->calibration.cy, 0.75);
+  EXPECT_NEAR(got->calibration.baseline_m, 0.12, 1e-15);
+  EXPECT_EQ(got->mount.parent_frame, "world");  // the bag says nothing of where the camera stood
+  EXPECT_EQ(channels.unpaired(), 0u);
+
+  EXPECT_THROW(RecordedChannels(f, {{"frame", "kestrel.StereoFrame", "/stereo", {"/stereo/left/image_rect_color"}}}),
+               Error);
 }
 
 TEST(RecordedChannels, RefusesATopicThatIsMissingOrOfAnotherType) {

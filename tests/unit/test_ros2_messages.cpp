@@ -2,10 +2,12 @@
 // written is exactly what its ros2msg schema says (decoded by the schema alone, as Foxglove does).
 #include <gmock/gmock.h>
 
+#include <kestrel/geometry/frames.hpp>
 #include <kestrel/messages/actuator_command.hpp>
 #include <kestrel/messages/attitude_target.hpp>
 #include <kestrel/messages/detections.hpp>
 #include <kestrel/messages/ground_truth.hpp>
+#include <kestrel/messages/imu.hpp>
 #include <kestrel/messages/net_capture.hpp>
 #include <kestrel/messages/net_fire.hpp>
 #include <kestrel/messages/point_cloud.hpp>
@@ -73,7 +75,7 @@ TEST(Ros2Messages, EveryEncodableTypeHasADefinitionAndADecoder) {
   EXPECT_THAT(schema_text("sensor_msgs/msg/Image"), ::testing::HasSubstr("\nMSG: builtin_interfaces/Time\n"));
 }
 
-TEST(Ros2Messages, AStereoFrameIsTwoImagesAndTwoCameraInfosPairedAgainByStamp) {
+TEST(Ros2Messages, AStereoFrameIsTwoImagesAndTwoCameraInfosPairedAgainByStampWithItsMountOnTf) {
   msg::StereoFrame f;
   f.stamp = Time(1'500'000'123);
   f.frame_index = 45;
@@ -84,6 +86,9 @@ TEST(Ros2Messages, AStereoFrameIsTwoImagesAndTwoCameraInfosPairedAgainByStamp) {
     f.right.data[i] = static_cast<std::uint8_t>(100 + i);
   }
   f.calibration = {4, 3, 304.6710927, 304.6710927, 1.5, 1.25, 0.12};
+  f.mount.parent_frame = "hunter";
+  f.mount.position = {0.1, -0.0123456789012345, 0.3};
+  f.mount.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()));
   std::vector<nlohmann::ordered_json> json;
   auto back = round_trip(f, &json);
   ASSERT_TRUE(back);
@@ -95,7 +100,15 @@ TEST(Ros2Messages, AStereoFrameIsTwoImagesAndTwoCameraInfosPairedAgainByStamp) {
   EXPECT_EQ(back->calibration.cy, f.calibration.cy);
   EXPECT_EQ(back->calibration.baseline_m, 0.12);  // bit for bit, through the right P's Tx
   EXPECT_EQ(back->calibration.width, 4);
-  ASSERT_EQ(json.size(), 4u);
+  EXPECT_EQ(back->mount.parent_frame, "hunter");
+  EXPECT_EQ(back->mount.position, f.mount.position);  // bit for bit, through the channels' metadata
+  EXPECT_EQ(back->mount.orientation.coeffs(), f.mount.orientation.coeffs());
+  ASSERT_EQ(json.size(), 5u);
+  const auto& tf = json[4]["transforms"][0];  // viewers place the camera on the vehicle
+  EXPECT_EQ(tf["header"]["frame_id"], "hunter");
+  EXPECT_EQ(tf["child_frame_id"], "camera");
+  EXPECT_EQ(tf["transform"]["translation"]["z"], 0.3);
+  EXPECT_EQ(tf["transform"]["rotation"]["w"], f.mount.orientation.w());
   EXPECT_EQ(json[0]["encoding"], "mono8");
   EXPECT_EQ(json[0]["header"]["stamp"]["sec"], 1);
   EXPECT_EQ(json[0]["header"]["stamp"]["nanosec"], 500000123);
@@ -104,6 +117,46 @@ TEST(Ros2Messages, AStereoFrameIsTwoImagesAndTwoCameraInfosPairedAgainByStamp) {
   f.left = cv::Mat(3, 4, CV_16UC1);
   f.right = cv::Mat(3, 4, CV_16UC1);
   EXPECT_THROW(encode("kestrel.StereoFrame", &f, "/cam/frame"), Error);
+}
+
+TEST(Ros2Messages, AnImuIsSensorMsgsImuAndItsMagneticFieldPairedByStamp) {
+  msg::Imu m;
+  m.stamp = Time(2'000'000'017);
+  m.frame = "ocams_imu";
+  m.angular_velocity = {0.01, -0.02, 0.5};
+  m.linear_acceleration = {0.1, 0.2, 9.81};
+  m.gravity_removed = true;
+  m.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d(0, 0.6, 0.8)));
+  m.magnetic_field = Eigen::Vector3d(39e-6, 0.5e-6, -25e-6);
+  std::vector<nlohmann::ordered_json> json;
+  auto back = round_trip(m, &json);
+  ASSERT_TRUE(back);
+  EXPECT_EQ(back->stamp, m.stamp);
+  EXPECT_EQ(back->frame, "ocams_imu");
+  EXPECT_EQ(back->angular_velocity, m.angular_velocity);
+  EXPECT_EQ(back->linear_acceleration, m.linear_acceleration);
+  EXPECT_TRUE(back->gravity_removed);
+  ASSERT_TRUE(back->orientation && back->magnetic_field);
+  EXPECT_EQ(back->orientation->coeffs(), m.orientation->coeffs());
+  EXPECT_EQ(*back->magnetic_field, *m.magnetic_field);
+  ASSERT_EQ(json.size(), 2u);
+  EXPECT_EQ(json[0]["orientation_covariance"][0], 0.0);
+
+  msg::Imu bare;  // no orientation, no magnetometer: one message, covariance -1 as the type says
+  bare.linear_acceleration = {0, 0, 9.8};
+  json.clear();
+  auto bare_back = round_trip(bare, &json);
+  ASSERT_TRUE(bare_back);
+  EXPECT_FALSE(bare_back->orientation);
+  EXPECT_FALSE(bare_back->magnetic_field);
+  ASSERT_EQ(json.size(), 1u);
+  EXPECT_EQ(json[0]["orientation_covariance"][0], -1.0);
+}
+
+TEST(Ros2Messages, TheDefaultMountIsALevelCameraLookingAlongItsParentsX) {
+  const msg::CameraMount m;
+  EXPECT_TRUE(m.orientation.toRotationMatrix().isApprox(geometry::body_from_camera(), 1e-15));
+  EXPECT_TRUE((m.orientation * Eigen::Vector3d::UnitZ()).isApprox(Eigen::Vector3d::UnitX()));
 }
 
 TEST(Ros2Messages, ACloudIsAPointCloud2OfFloatXyzWithItsPixelsPerPointInTheChannel) {

@@ -4,9 +4,9 @@
 
 #include <thread>
 
-#include "write_queue.hpp"
+#include "kestrel/mcap/write_queue.hpp"
 
-using kestrel::recorder::WriteQueue;
+using kestrel::mcap::WriteQueue;
 
 TEST(WriteQueue, DropsAndCountsWhatFindsItFullWithoutWaiting) {
   WriteQueue<int> q(2);

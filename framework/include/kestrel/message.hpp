@@ -79,6 +79,18 @@ struct Envelope {
   explicit operator bool() const { return payload != nullptr; }
 };
 
+/// The topic of an output, "/NODE/PORT": how taps select outputs, and the channel name MCAP
+/// recordings and the live view give it (ROS 2 topic names allow no dots).
+inline std::string output_topic(std::string_view node, std::string_view port) {
+  std::string topic;
+  topic.reserve(node.size() + port.size() + 2);
+  topic.append("/").append(node).append("/").append(port);
+  return topic;
+}
+
+/// The topic of the output a message was published on.
+inline std::string topic_of(const Envelope& e) { return output_topic(e.source_node, e.source_port); }
+
 }  // namespace kestrel
 
 /// Gives message type T its stable, globally unique name. Use at global namespace scope, in the

@@ -19,9 +19,10 @@ namespace kestrel::ros2 {
 
 /// A channel a kestrel message type is written on.
 struct ChannelSpec {
-  std::string topic;     ///< full topic: the output's, a suffix of it ("/NODE/PORT/left") or "/tf"
-  std::string schema;    ///< ROS 2 type, "sensor_msgs/msg/Image"
-  bool derived = false;  ///< for viewers only (markers, /tf); replay does not read it
+  std::string topic;      ///< full topic: the output's, a suffix of it ("/NODE/PORT/left") or "/tf"
+  std::string schema;     ///< ROS 2 type, "sensor_msgs/msg/Image"
+  bool derived = false;   ///< for viewers only (markers, /tf); replay does not read it
+  bool optional = false;  ///< replay goes on without it (another driver's bag may not have it)
 };
 
 /// One ROS 2 message made from a kestrel message.

@@ -1,13 +1,14 @@
 #pragma once
-// Between the graph and the recorder's writer thread under the realtime executor: a bounded
-// queue that never blocks the graph. A message that finds it full is dropped and counted.
+// Between the graph and a thread that writes a file (the recorder's, the oCamS driver's raw
+// capture) under the realtime executor: a bounded queue that never blocks the graph. An item that
+// finds it full is dropped and counted.
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
 #include <mutex>
 #include <optional>
 
-namespace kestrel::recorder {
+namespace kestrel::mcap {
 
 template <class T>
 class WriteQueue {
@@ -61,4 +62,4 @@ class WriteQueue {
   std::uint64_t dropped_ = 0;
 };
 
-}  // namespace kestrel::recorder
+}  // namespace kestrel::mcap
