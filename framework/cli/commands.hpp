@@ -100,6 +100,16 @@ int inspect_command(const std::string& name);
 int mcap_info_command(const McapInfoArgs& args);
 int mcap_cat_command(const McapCatArgs& args);
 
+struct CalibrateArgs {
+  std::string left, right;    // folders or numbered patterns of the chessboard pairs
+  std::string board = "8x6";  // inner corners
+  double square_m = 0.025;
+  std::string out = ".";
+  std::string name = "stereo";  // camera_name prefix
+};
+/// `kestrel calibrate`: camera_info files from chessboard pairs.
+int calibrate_command(const CalibrateArgs& args);
+
 /// `kestrel devices`: V4L2 devices and serial ports, and which look like an oCamS.
 int devices_command();
 

@@ -134,6 +134,16 @@ int main(int argc, char** argv) {
   auto* devices_cmd = app.add_subcommand(
       "devices", "List V4L2 cameras and serial ports, with their formats, and which look like an oCamS");
 
+  CalibrateArgs calibrate;
+  auto* calibrate_cmd =
+      app.add_subcommand("calibrate", "Stereo camera_info files (left.yaml, right.yaml) from chessboard image pairs");
+  calibrate_cmd->add_option("left", calibrate.left, "folder or pattern (left/%06d.png) of the left images")->required();
+  calibrate_cmd->add_option("right", calibrate.right, "folder or pattern of the right images")->required();
+  calibrate_cmd->add_option("--board", calibrate.board, "inner corners, COLSxROWS (default 8x6)");
+  calibrate_cmd->add_option("--square", calibrate.square_m, "side of a square, metres (default 0.025)");
+  calibrate_cmd->add_option("--out", calibrate.out, "folder the two files are written to (default .)");
+  calibrate_cmd->add_option("--name", calibrate.name, "camera_name prefix (default stereo)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -155,5 +165,6 @@ int main(int argc, char** argv) {
   if (*mcap_info_cmd) return mcap_info_command(mcap_info);
   if (*mcap_cat_cmd) return mcap_cat_command(mcap_cat);
   if (*devices_cmd) return devices_command();
+  if (*calibrate_cmd) return calibrate_command(calibrate);
   return kUsage;
 }

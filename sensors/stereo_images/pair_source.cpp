@@ -87,8 +87,14 @@ cv::Mat read(const std::string& file) {
 PairSource::PairSource(const PairSourceOptions& o) {
   if (!o.video.empty()) {
     if (!o.left.empty() || !o.right.empty()) throw Error("give either a video or left and right images, not both");
-    video_ = std::make_unique<cv::VideoCapture>(o.video);
-    if (!video_->isOpened()) throw Error("the video '" + o.video + "' does not open");
+    // A file's decoders only: with any backend, OpenCV would also probe for cameras (gphoto2,
+    // libusb) before it reads the file.
+    for (const int backend : {cv::CAP_FFMPEG, cv::CAP_GSTREAMER, cv::CAP_OPENCV_MJPEG}) {
+      video_ = std::make_unique<cv::VideoCapture>(o.video, backend);
+      if (video_->isOpened()) break;
+    }
+    if (!video_->isOpened())
+      throw Error("the video '" + o.video + "' does not open (FFmpeg, GStreamer and OpenCV's MJPEG reader tried)");
     video_name_ = o.video;
     const double n = video_->get(cv::CAP_PROP_FRAME_COUNT);
     size_ = n > 0 ? static_cast<std::size_t>(n) : 0;

@@ -12,6 +12,7 @@
 #include <random>
 
 #include "camera_info.hpp"
+#include "chessboard_calibration.hpp"
 #include "stereo_rectifier.hpp"
 
 using namespace kestrel;
@@ -233,4 +234,89 @@ TEST(StereoRectifier, RefusesFilesThatAreNotOneRectifiedPair) {
   CameraInfo rectified_right = rectified;
   rectified_right.p[3] = -rectified.p[0] * 0.12;
   EXPECT_TRUE(StereoRectifier(rectified, rectified_right).passthrough());
+}
+
+namespace {
+
+// What a raw camera (K, D) sees of a chessboard at pose (R, t) in its frame: each raw pixel
+// undistorted to a ray, the ray met with the board's plane, the board's texture sampled there;
+// 2 x 2 samples a pixel, averaged, as a sensor integrates light over it.
+// The rays of a raw camera's 2 x 2 samples a pixel, in its normalised image plane.
+std::vector<cv::Point2f> sample_rays(const cv::Matx33d& k, const cv::Mat& d) {
+  std::vector<cv::Point2f> samples;
+  for (int y = 0; y < 960; ++y)
+    for (int x = 0; x < 1280; ++x)
+      samples.emplace_back(static_cast<float>((x + 0.5) / 2 - 0.5), static_cast<float>((y + 0.5) / 2 - 0.5));
+  std::vector<cv::Point2f> rays;
+  cv::undistortPoints(samples, rays, k, d, cv::noArray(), cv::noArray(),
+                      cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 50, 1e-12));
+  return rays;
+}
+
+cv::Mat view_of_board(const cv::Mat& texture, double metres_per_texel, const std::vector<cv::Point2f>& rays,
+                      const cv::Matx33d& r, const cv::Vec3d& t) {
+  // Plane z = 0 of the board: camera point = r * (X, Y, 0) + t, so the ray (x, y, 1) * s meets it
+  // where [r1 r2 t] (X, Y, 1) = s (x, y, 1).
+  const cv::Matx33d h(r(0, 0), r(0, 1), t[0], r(1, 0), r(1, 1), t[1], r(2, 0), r(2, 1), t[2]);
+  const cv::Matx33d h_inv = h.inv();
+  cv::Mat map(960, 1280, CV_32FC2);
+  for (int i = 0; i < 960 * 1280; ++i) {
+    const auto& ray = rays[static_cast<std::size_t>(i)];
+    const cv::Vec3d p = h_inv * cv::Vec3d(ray.x, ray.y, 1);
+    // texel k covers [k, k + 1) of the board, and remap samples a texel's centre at k
+    map.at<cv::Vec2f>(i / 1280, i % 1280) = {static_cast<float>(p[0] / p[2] / metres_per_texel - 0.5),
+                                             static_cast<float>(p[1] / p[2] / metres_per_texel - 0.5)};
+  }
+  cv::Mat fine, view;
+  cv::remap(texture, fine, map, cv::noArray(), cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar(128));
+  cv::resize(fine, view, {640, 480}, 0, 0, cv::INTER_AREA);
+  return view;
+}
+
+}  // namespace
+
+TEST(ChessboardCalibration, RecoversAKnownRigFromRenderedBoardPairs) {
+  const Rig rig;
+  // A board of 9 x 7 squares of 25 mm (8 x 6 inner corners), 40 texels a square, white margin;
+  // texel (0, 0) of the squares is the board's origin.
+  const int px = 40;
+  cv::Mat texture(7 * px + 2 * px, 9 * px + 2 * px, CV_8UC1, cv::Scalar(255));
+  for (int r = 0; r < 7; ++r)
+    for (int c = 0; c < 9; ++c)
+      if ((r + c) % 2 == 0) texture(cv::Rect(px + c * px, px + r * px, px, px)).setTo(0);
+  const double metres_per_texel = 0.025 / px;
+  // The inner corner (0, 0) is at texel (2 px, 2 px): the board frame's origin there.
+  const cv::Vec3d corner_origin(-2 * px * metres_per_texel, -2 * px * metres_per_texel, 0);
+  cv::Matx33d r_lr;
+  cv::Rodrigues(rig.rotation, r_lr);
+  const auto left_rays = sample_rays(rig.k_left, rig.d_left), right_rays = sample_rays(rig.k_right, rig.d_right);
+  std::vector<std::pair<cv::Mat, cv::Mat>> pairs;
+  std::vector<std::string> names;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> tilt(-0.5, 0.5), along(-0.16, 0.16), depth(0.4, 0.8);
+  for (int i = 0; i < 24; ++i) {
+    cv::Matx33d r;
+    cv::Rodrigues(cv::Vec3d(tilt(rng), tilt(rng), 0.3 * tilt(rng)), r);
+    const cv::Vec3d t_corner(along(rng) - 0.09, along(rng) * 0.7 - 0.06, depth(rng));
+    const cv::Vec3d t = t_corner + r * corner_origin;  // where texel (0, 0) lies
+    const cv::Mat left = view_of_board(texture, metres_per_texel, left_rays, r, t);
+    const cv::Mat right = view_of_board(texture, metres_per_texel, right_rays, r_lr * r, r_lr * t + rig.translation);
+    pairs.emplace_back(left, right);
+    names.push_back("view " + std::to_string(i));
+  }
+  const ChessboardCalibration c = calibrate_stereo(pairs, names, {{8, 6}, 0.025});
+  EXPECT_GE(c.pairs_used, 10u) << ::testing::PrintToString(c.skipped);
+  EXPECT_LT(c.rms_px, 0.3);
+  EXPECT_NEAR(c.rig.k_left(0, 0), rig.k_left(0, 0), 0.01 * rig.k_left(0, 0));
+  EXPECT_NEAR(c.rig.k_right(1, 1), rig.k_right(1, 1), 0.01 * rig.k_right(1, 1));
+  EXPECT_NEAR(cv::norm(c.rig.t), cv::norm(rig.translation), 0.01 * cv::norm(rig.translation));
+  EXPECT_NEAR(-c.right.p[3] / c.right.p[0], cv::norm(rig.translation), 0.01 * cv::norm(rig.translation));
+  EXPECT_LT(c.epipolar.mean_px, 0.1);
+  EXPECT_LT(cv::norm(cv::Mat(c.rig.r), cv::Mat(r_lr)), 0.002);  // the pair's rotation to 2 mrad
+  // The files it makes build the rectifier the drivers use.
+  EXPECT_NO_THROW(StereoRectifier(c.left, c.right));
+  // Without enough views of the board, it says so.
+  std::vector<std::pair<cv::Mat, cv::Mat>> blank(
+      6, {cv::Mat(480, 640, CV_8UC1, cv::Scalar(90)), cv::Mat(480, 640, CV_8UC1, cv::Scalar(90))});
+  EXPECT_THROW(calibrate_stereo(blank, {}, {{8, 6}, 0.025}), Error);
 }
