@@ -4,6 +4,7 @@
 #include "camera_info.hpp"
 
 #include <cstdint>
+#include <kestrel/error.hpp>
 #include <string>
 
 #include "stereo_rectifier.hpp"

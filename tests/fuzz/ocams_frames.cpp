@@ -2,6 +2,7 @@
 // size the first two bytes pick, must unpack or give a kestrel::Error; never a crash or a read
 // outside the bytes.
 #include <cstdint>
+#include <kestrel/error.hpp>
 
 #include "raw_frame.hpp"
 
