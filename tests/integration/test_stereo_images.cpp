@@ -5,6 +5,7 @@
 // give the rendered graph's detections: exactly for the rectified pairs, and to what two
 // interpolations change for the raw ones.
 #include <gmock/gmock.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -29,8 +30,9 @@ namespace {
 
 PluginHost& plugins() { return kestrel::testing::built_plugins(); }
 
+// Per process: ctest runs each test as its own process, in parallel, and each records its own run.
 fs::path scratch(const std::string& name) {
-  const auto dir = fs::temp_directory_path() / "kestrel-stereo-images" / name;
+  const auto dir = fs::temp_directory_path() / ("kestrel-stereo-images-" + std::to_string(getpid())) / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
