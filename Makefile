@@ -64,8 +64,12 @@ ASAN_ENV := ASAN_OPTIONS=detect_leaks=1:intercept_tls_get_addr=0:check_initializ
 # The tests test-asan leaves out, one exact name per line with the reason (tests/sanitizers).
 ASAN_SKIP := ^($(shell grep -v -e '^\#' -e '^$$' $(SAN_DIR)/asan-skip.txt | sed 's/[.]/[.]/g' | paste -sd'|'))$$
 TSAN_ENV := TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:suppressions=$(SAN_DIR)/tsan.supp
-FUZZ_BUILD   ?= build-fuzz
-FUZZ_SECONDS ?= 30
+# The ASan test suite and the fuzz targets share one clang-14 build folder: the fuzz targets, and
+# the libraries they reach, also carry coverage instrumentation (tests/fuzz/CMakeLists.txt).
+ASAN_BUILD := build-asan
+ASAN_CMAKE := $(SAN_CMAKE) -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 \
+  -DKESTREL_SANITIZE=address,undefined,float-cast-overflow -DKESTREL_BUILD_FUZZ=ON
+FUZZ_SECONDS ?= 20
 
 # The whole test suite under AddressSanitizer (with LeakSanitizer) and UndefinedBehaviorSanitizer,
 # built with clang-14 (a third faster to build than GCC, and a second compiler's warnings), but
@@ -74,13 +78,12 @@ FUZZ_SECONDS ?= 30
 # (examples/hello_plugin) with its own, uninstrumented flags, so it tests packaging, not our code
 # under the sanitizers; `make test` runs it.
 test-asan: deps
-	cmake -S . -B build-asan $(SAN_CMAKE) -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 \
-	  -DKESTREL_SANITIZE=address,undefined,float-cast-overflow
-	cmake --build build-asan -j $(JOBS)
+	cmake -S . -B $(ASAN_BUILD) $(ASAN_CMAKE)
+	cmake --build $(ASAN_BUILD) -j $(JOBS)
 	@missing=$$(grep -v -e '^#' -e '^$$' $(SAN_DIR)/asan-skip.txt | while read -r name; do \
-	  ctest --test-dir build-asan -N -R "^$$name$$" | grep -q 'Total Tests: 1$$' || echo "$$name"; done); \
+	  ctest --test-dir $(ASAN_BUILD) -N -R "^$$name$$" | grep -q 'Total Tests: 1$$' || echo "$$name"; done); \
 	  if [ -n "$$missing" ]; then echo "test-asan: asan-skip.txt names no such test: $$missing" >&2; exit 1; fi
-	$(ASAN_ENV) ctest --test-dir build-asan --output-on-failure -j $(JOBS) -E '$(ASAN_SKIP)'
+	$(ASAN_ENV) ctest --test-dir $(ASAN_BUILD) --output-on-failure -j $(JOBS) -E '$(ASAN_SKIP)'
 
 # The threaded tests (CTest label `threads`: realtime executor, its queues, signal shutdown)
 # under ThreadSanitizer; only the targets they need are built.
@@ -90,16 +93,16 @@ test-tsan: deps
 	  kestrel_live_server_tests kestrel_recorder_thread_tests
 	$(TSAN_ENV) ctest --test-dir build-tsan --output-on-failure -j $(JOBS) -L threads
 
-# libFuzzer targets (tests/fuzz), built with clang-14 under ASan and UBSan.
+# libFuzzer targets (tests/fuzz), built with clang-14 under ASan and UBSan in test-asan's folder
+# (after test-asan, nothing is left to build).
 fuzz: deps
-	cmake -S . -B $(FUZZ_BUILD) $(SAN_CMAKE) -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 \
-	  -DKESTREL_BUILD_FUZZ=ON
-	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target kestrel_fuzz
+	cmake -S . -B $(ASAN_BUILD) $(ASAN_CMAKE)
+	cmake --build $(ASAN_BUILD) -j $(JOBS) --target kestrel_fuzz
 
 # Each fuzz target for FUZZ_SECONDS on a scratch copy of its committed corpus; fails on a crash.
 # FUZZ_TARGETS="mot_reader ..." limits it to some targets.
 fuzz-smoke: fuzz
-	scripts/fuzz-smoke $(FUZZ_BUILD) $(FUZZ_SECONDS)
+	scripts/fuzz-smoke $(ASAN_BUILD) $(FUZZ_SECONDS)
 
 clean:
-	rm -rf $(BUILD) build-asan build-tsan $(FUZZ_BUILD) out
+	rm -rf $(BUILD) $(ASAN_BUILD) build-tsan out

@@ -113,4 +113,14 @@ int calibrate_command(const CalibrateArgs& args);
 /// `kestrel devices`: V4L2 devices and serial ports, and which look like an oCamS.
 int devices_command();
 
+struct MavlinkListenArgs {
+  std::string connection;              // udpin://, udpout:// or serial:// URL
+  std::optional<double> duration_s;    // stop after this long (default: at Ctrl-C)
+  std::optional<std::uint64_t> count;  // stop after printing this many messages
+  std::vector<std::string> only;       // print only these messages (all are counted)
+  bool heartbeat = false;              // send a ground station's heartbeat at 1 Hz
+};
+/// `kestrel mavlink listen`: decoded messages, one line each, and their rates.
+int mavlink_listen_command(const MavlinkListenArgs& args);
+
 }  // namespace kestrel::cli

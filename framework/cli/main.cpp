@@ -144,6 +144,21 @@ int main(int argc, char** argv) {
   calibrate_cmd->add_option("--out", calibrate.out, "folder the two files are written to (default .)");
   calibrate_cmd->add_option("--name", calibrate.name, "camera_name prefix (default stereo)");
 
+  auto* mavlink_cmd =
+      app.add_subcommand("mavlink", "Talk to an autopilot over MAVLink (docs/field.md)")->require_subcommand(1);
+  MavlinkListenArgs mavlink_listen;
+  auto* mavlink_listen_cmd = mavlink_cmd->add_subcommand(
+      "listen", "Print each message received (its name, then its fields, one line each) and the rates at the end");
+  mavlink_listen_cmd
+      ->add_option("connection", mavlink_listen.connection,
+                   "udpin://0.0.0.0:14540, udpout://HOST:PORT or serial:///dev/ttyACM0:921600")
+      ->required();
+  mavlink_listen_cmd->add_option("--duration", mavlink_listen.duration_s, "stop after this many seconds");
+  mavlink_listen_cmd->add_option("--count", mavlink_listen.count, "stop after printing N messages");
+  mavlink_listen_cmd->add_option("--only", mavlink_listen.only, "print only this message, e.g. HEARTBEAT (repeatable)");
+  mavlink_listen_cmd->add_flag("--heartbeat", mavlink_listen.heartbeat,
+                               "send a ground station's heartbeat at 1 Hz (some autopilots stream only then)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -166,5 +181,6 @@ int main(int argc, char** argv) {
   if (*mcap_cat_cmd) return mcap_cat_command(mcap_cat);
   if (*devices_cmd) return devices_command();
   if (*calibrate_cmd) return calibrate_command(calibrate);
+  if (*mavlink_listen_cmd) return mavlink_listen_command(mavlink_listen);
   return kUsage;
 }

@@ -1,28 +1,22 @@
 #pragma once
-// A serial port (termios) read as lines: raw 8N1 at a chosen baud rate, each line waited for
-// with a timeout, a hang-up (the device unplugged) told apart from a quiet line. The oCamS's
-// IMU is a CDC-ACM port; tests use a pseudo-terminal.
+// The IMU's serial port read as lines, on kestrel's serial port (raw 8N1, reads with a timeout, a
+// hang-up told apart from a quiet line). The oCamS's IMU is a CDC-ACM port; tests use a
+// pseudo-terminal.
 #include <chrono>
-#include <kestrel/error.hpp>
+#include <kestrel/io/serial_port.hpp>
 #include <optional>
 #include <string>
 
 namespace kestrel::ocams {
 
 /// The port went away (unplugged, hung up).
-class PortLost : public Error {
- public:
-  using Error::Error;
-};
+using PortLost = io::PortLost;
 
 class SerialPort {
  public:
   /// Opens and configures `path`. Throws PortLost when it is not there, Error when it is not a
   /// terminal or refuses the baud rate.
-  SerialPort(std::string path, int baud);
-  ~SerialPort();
-  SerialPort(const SerialPort&) = delete;
-  SerialPort& operator=(const SerialPort&) = delete;
+  SerialPort(std::string path, int baud) : port_(std::move(path), baud) {}
 
   /// The next line without its CR LF, waiting at most `timeout`; nullopt if none is complete by
   /// then. A line longer than `max_line` bytes is cut and returned as it is (the parser refuses
@@ -30,11 +24,10 @@ class SerialPort {
   std::optional<std::string> read_line(std::chrono::milliseconds timeout, std::size_t max_line = 512);
   /// Writes all of `text`. Throws PortLost on a hang-up.
   void write(const std::string& text);
-  const std::string& path() const { return path_; }
+  const std::string& path() const { return port_.path(); }
 
  private:
-  std::string path_;
-  int fd_ = -1;
+  io::SerialPort port_;
   std::string pending_;
 };
 

@@ -107,9 +107,16 @@ std::vector<pid_t> processes_with(const std::string& needle) {
   for (const auto& entry : fs::directory_iterator("/proc")) {
     const std::string name = entry.path().filename().string();
     if (name.find_first_not_of("0123456789") != std::string::npos) continue;
-    std::string cmdline = read(entry.path() / "cmdline");
+    // A process may exit between the listing and the reads: libstdc++ then throws ESRCH from
+    // the stream, and the process is simply no longer there.
+    std::string cmdline, stat;
+    try {
+      cmdline = read(entry.path() / "cmdline");
+      stat = read(entry.path() / "stat");
+    } catch (const std::exception&) {
+      continue;
+    }
     std::replace(cmdline.begin(), cmdline.end(), '\0', ' ');
-    const std::string stat = read(entry.path() / "stat");
     const auto state = stat.rfind(')');
     if (state == std::string::npos || state + 2 >= stat.size() || stat[state + 2] == 'Z') continue;
     if (cmdline.find(needle) != std::string::npos) found.push_back(std::stoi(name));

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <kestrel/messages/actuator_command.hpp>
 #include <kestrel/messages/attitude_target.hpp>
+#include <kestrel/messages/autopilot_status.hpp>
 #include <kestrel/messages/detections.hpp>
 #include <kestrel/messages/ground_truth.hpp>
 #include <kestrel/messages/net_capture.hpp>
@@ -48,7 +49,8 @@ TEST(MessageReference, EveryInTreeMessageDeclaresItsFieldsAndIsDocumented) {
        {message_info<msg::StereoFrame>(), message_info<msg::PointCloud>(), message_info<msg::Detections>(),
         message_info<msg::Tracks>(), message_info<msg::GroundTruth>(), message_info<msg::VehicleState>(),
         message_info<msg::TrajectorySetpoint>(), message_info<msg::ActuatorCommand>(),
-        message_info<msg::AttitudeTarget>(), message_info<msg::NetFire>(), message_info<msg::NetCapture>()})
+        message_info<msg::AttitudeTarget>(), message_info<msg::NetFire>(), message_info<msg::NetCapture>(),
+        message_info<msg::AutopilotStatus>()})
     types[info.name] = info;
   PluginHost host;
   host.load_search_path();

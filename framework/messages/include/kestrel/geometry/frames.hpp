@@ -1,7 +1,8 @@
 #pragma once
 // The coordinate frames every kestrel plugin agrees on.
 //
-//   world   W: x forward (north), y left, z up. Gravity is -z.
+//   world   W: level and z up, gravity -z. Against a compass it is ENU (x east, y north, as
+//              ROS REP 103); ned_enu.hpp converts to the NED of PX4, ArduPilot and MAVLink.
 //   body    B: the hunter's body, x forward, y left, z up (FLU), at its centre of mass.
 //   camera  C: the optical frame of the left camera: x right, y down, z forward (along the
 //              optical axis), as in the paper's equation (1). Mounted on the body looking
