@@ -1,0 +1,126 @@
+#include "link.hpp"
+
+#include <kestrel/error.hpp>
+#include <map>
+
+namespace kestrel::mavlink {
+
+namespace {
+
+// Kept bounded: a node that never asks must not let the link grow without end.
+constexpr std::size_t kKeptAcks = 64, kKeptTexts = 64;
+
+}  // namespace
+
+std::shared_ptr<Link> Link::open(const std::string& url) {
+  static std::mutex mutex;
+  static std::map<std::string, std::weak_ptr<Link>> links;
+  std::lock_guard lock(mutex);
+  if (auto existing = links[url].lock()) return existing;
+  auto link = std::make_shared<Link>(open_transport(parse_connection_url(url)));
+  links[url] = link;
+  return link;
+}
+
+Link::Link(std::unique_ptr<Transport> transport) : transport_(std::move(transport)) {
+  reader_ = std::thread([this] { read_loop(); });
+}
+
+Link::~Link() {
+  stop_ = true;
+  if (reader_.joinable()) reader_.join();
+}
+
+void Link::read_loop() {
+  FrameParser parser;
+  std::vector<std::uint8_t> buffer(4096);
+  while (!stop_) {
+    std::size_t n = 0;
+    try {
+      n = transport_->receive(buffer, std::chrono::milliseconds(50));
+    } catch (const std::exception& e) {
+      std::lock_guard lock(mutex_);
+      failure_ = e.what();
+      failed_ = true;
+      return;
+    }
+    const auto frames = parser.feed(std::span(buffer.data(), n));
+    std::lock_guard lock(mutex_);
+    for (const Frame& f : frames) take(f);
+    view_.parser = parser.counts();
+  }
+}
+
+void Link::take(const Frame& f) {
+  const auto now = LinkClock::now();
+  if (f.is<Heartbeat>()) {
+    const auto hb = f.as<Heartbeat>();
+    if (hb.autopilot == mav::autopilot_invalid) return;  // a ground station or another companion
+    view_.heartbeat = hb;
+    view_.heartbeat_at = now;
+    ++view_.heartbeat_count;
+    view_.system_id = f.system_id;
+    view_.component_id = f.component_id;
+    system_id_ = f.system_id;  // a companion speaks as part of its vehicle's system
+  } else if (f.is<LocalPositionNed>()) {
+    view_.position = f.as<LocalPositionNed>();
+    view_.position_at = now;
+    ++view_.position_count;
+  } else if (f.is<AttitudeQuaternion>()) {
+    view_.attitude = f.as<AttitudeQuaternion>();
+    view_.attitude_at = now;
+    ++view_.attitude_count;
+  } else if (f.is<Odometry>()) {
+    view_.odometry = f.as<Odometry>();
+    view_.odometry_at = now;
+    ++view_.odometry_count;
+  } else if (f.is<ExtendedSysState>()) {
+    view_.extended = f.as<ExtendedSysState>();
+  } else if (f.is<CommandAck>()) {
+    acks_.push_back(f.as<CommandAck>());
+    if (acks_.size() > kKeptAcks) acks_.pop_front();
+  } else if (f.is<StatusText>()) {
+    texts_.push_back(f.as<StatusText>());
+    if (texts_.size() > kKeptTexts) texts_.pop_front();
+  }
+}
+
+VehicleView Link::view() const {
+  std::lock_guard lock(mutex_);
+  return view_;
+}
+
+std::vector<CommandAck> Link::take_acks() {
+  std::lock_guard lock(mutex_);
+  std::vector<CommandAck> out(acks_.begin(), acks_.end());
+  acks_.clear();
+  return out;
+}
+
+std::vector<StatusText> Link::take_texts() {
+  std::lock_guard lock(mutex_);
+  std::vector<StatusText> out(texts_.begin(), texts_.end());
+  texts_.clear();
+  return out;
+}
+
+bool Link::send_frame(const std::vector<std::uint8_t>& frame) {
+  if (failed_) return false;
+  try {
+    return transport_->send(frame);
+  } catch (const std::exception& e) {
+    std::lock_guard lock(mutex_);
+    failure_ = e.what();
+    failed_ = true;
+    return false;
+  }
+}
+
+std::string Link::describe() const { return transport_->describe(); }
+
+std::optional<std::string> Link::failure() const {
+  std::lock_guard lock(mutex_);
+  return failure_;
+}
+
+}  // namespace kestrel::mavlink

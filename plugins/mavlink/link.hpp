@@ -1,0 +1,90 @@
+#pragma once
+// One MAVLink link to one vehicle, shared by every node of the process that names its URL: the
+// source and the sink of a vehicle share its socket, as the autopilot expects one peer. A reader
+// thread parses what arrives and keeps the latest of each message the nodes need, with when it
+// came; nodes take snapshots and send through the link.
+#include <atomic>
+#include <chrono>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "frame.hpp"
+#include "frame_parser.hpp"
+#include "messages.hpp"
+#include "transport.hpp"
+
+namespace kestrel::mavlink {
+
+using LinkClock = std::chrono::steady_clock;
+
+/// The latest of what the vehicle's autopilot said. A `*_count` grows with each message of that
+/// kind, so a reader can tell a new one from the one it has seen.
+struct VehicleView {
+  std::optional<LinkClock::time_point> heartbeat_at;
+  Heartbeat heartbeat;
+  std::uint64_t heartbeat_count = 0;
+  std::optional<LinkClock::time_point> position_at;
+  LocalPositionNed position;
+  std::uint64_t position_count = 0;
+  std::optional<LinkClock::time_point> attitude_at;
+  AttitudeQuaternion attitude;
+  std::uint64_t attitude_count = 0;
+  std::optional<LinkClock::time_point> odometry_at;
+  Odometry odometry;
+  std::uint64_t odometry_count = 0;
+  ExtendedSysState extended;
+  std::uint8_t system_id = 0;     ///< the autopilot's, from its heartbeat (0 until heard)
+  std::uint8_t component_id = 0;  ///< likewise
+  ParserCounts parser;
+};
+
+class Link {
+ public:
+  /// The process's link for `url`, opened on first use. Throws kestrel::Error (the URL, the cause).
+  static std::shared_ptr<Link> open(const std::string& url);
+  /// A link over a transport of the caller's (tests).
+  explicit Link(std::unique_ptr<Transport> transport);
+  ~Link();
+  Link(const Link&) = delete;
+  Link& operator=(const Link&) = delete;
+
+  VehicleView view() const;
+  /// Acknowledgements and status texts received since the last call.
+  std::vector<CommandAck> take_acks();
+  std::vector<StatusText> take_texts();
+  /// Sends as the companion computer (the autopilot's system id once heard, component 191).
+  /// False when nobody can be sent to yet (udpin before the autopilot spoke) or the link failed.
+  template <class M>
+  bool send(const M& message) {
+    std::lock_guard lock(send_mutex_);
+    return send_frame(encode_v2(M::definition(), &message, {system_id_, mav::comp_onboard_computer}, sequence_++));
+  }
+  std::string describe() const;
+  /// Why the reader stopped (the device went away), if it did.
+  std::optional<std::string> failure() const;
+
+ private:
+  bool send_frame(const std::vector<std::uint8_t>& frame);
+  void read_loop();
+  void take(const Frame& frame);
+
+  std::unique_ptr<Transport> transport_;
+  mutable std::mutex mutex_;  // guards what the reader writes
+  VehicleView view_;
+  std::deque<CommandAck> acks_;
+  std::deque<StatusText> texts_;
+  std::optional<std::string> failure_;
+  std::mutex send_mutex_;  // taken before mutex_, never after
+  std::uint8_t sequence_ = 0;
+  std::atomic<std::uint8_t> system_id_{1};
+  std::atomic<bool> failed_{false};
+  std::atomic<bool> stop_{false};
+  std::thread reader_;
+};
+
+}  // namespace kestrel::mavlink
