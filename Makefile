@@ -90,7 +90,7 @@ test-asan: deps
 test-tsan: deps
 	cmake -S . -B build-tsan $(SAN_CMAKE) -DKESTREL_SANITIZE=thread
 	cmake --build build-tsan -j $(JOBS) --target kestrel_framework_tests kestrel_write_queue_tests \
-	  kestrel_live_server_tests kestrel_recorder_thread_tests kestrel_mavlink_tests
+	  kestrel_live_server_tests kestrel_recorder_thread_tests kestrel_mavlink_tests kestrel_mavlink_source_tests
 	$(TSAN_ENV) ctest --test-dir build-tsan --output-on-failure -j $(JOBS) -L threads
 
 # libFuzzer targets (tests/fuzz), built with clang-14 under ASan and UBSan in test-asan's folder

@@ -59,4 +59,13 @@ ConnectionUrl parse_connection_url(const std::string& text) {
   return url;
 }
 
+bool valid_connection_url(const std::string& text) {
+  try {
+    parse_connection_url(text);
+    return true;
+  } catch (const Error&) {
+    return false;
+  }
+}
+
 }  // namespace kestrel::mavlink

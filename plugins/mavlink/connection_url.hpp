@@ -20,5 +20,7 @@ struct ConnectionUrl {
 
 /// Throws kestrel::Error saying what is wrong and showing the three forms.
 ConnectionUrl parse_connection_url(const std::string& text);
+/// Whether parse_connection_url takes it (for parameter rules, checked when a graph is validated).
+bool valid_connection_url(const std::string& text);
 
 }  // namespace kestrel::mavlink

@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "connection_url.hpp"
+#include "fakes/udp_ports.hpp"
 #include "link.hpp"
 #include "udp_transport.hpp"
 
@@ -14,14 +15,6 @@ using namespace kestrel::mavlink;
 using namespace std::chrono_literals;
 
 namespace {
-
-std::unique_ptr<UdpTransport> listening_transport() {
-  ConnectionUrl url;
-  url.kind = ConnectionUrl::Kind::udp_in;
-  url.host = "127.0.0.1";
-  url.text = "udpin://127.0.0.1:0";
-  return std::make_unique<UdpTransport>(url);
-}
 
 template <class Predicate>
 bool eventually(Predicate done) {
@@ -35,7 +28,7 @@ bool eventually(Predicate done) {
 }  // namespace
 
 TEST(MavlinkLink, KeepsTheAutopilotsLatestStateAndSpeaksAsItsCompanion) {
-  auto transport = listening_transport();
+  auto transport = kestrel::testing::listening_udp();
   const std::uint16_t port = transport->local_port();
   Link link(std::move(transport));
   UdpTransport vehicle(parse_connection_url("udpout://127.0.0.1:" + std::to_string(port)));

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "connection_url.hpp"
+#include "fakes/udp_ports.hpp"
 #include "frame.hpp"
 #include "messages.hpp"
 #include "udp_transport.hpp"
@@ -16,14 +17,6 @@ using namespace kestrel::mavlink;
 using namespace std::chrono_literals;
 
 namespace {
-
-std::uint16_t free_udp_port() {
-  ConnectionUrl url;
-  url.kind = ConnectionUrl::Kind::udp_in;
-  url.host = "127.0.0.1";
-  url.text = "udpin://127.0.0.1:0";
-  return UdpTransport(url).local_port();
-}
 
 struct Output {
   std::string text;
@@ -45,7 +38,7 @@ Output run(const std::string& command) {
 }  // namespace
 
 TEST(MavlinkListen, PrintsEachMessageOnALineOfItsOwnAndTheRates) {
-  const std::uint16_t port = free_udp_port();
+  const std::uint16_t port = kestrel::testing::free_udp_port();
   auto listener = std::async(std::launch::async, [&] {
     return run(std::string(KESTREL_CLI) + " mavlink listen udpin://127.0.0.1:" + std::to_string(port) +
                " --count 4 --duration 20");
@@ -76,8 +69,8 @@ TEST(MavlinkListen, PrintsEachMessageOnALineOfItsOwnAndTheRates) {
 }
 
 TEST(MavlinkListen, SilenceAndBadUrlsSayWhy) {
-  const Output silent = run(std::string(KESTREL_CLI) +
-                            " mavlink listen udpin://127.0.0.1:" + std::to_string(free_udp_port()) + " --duration 0.3");
+  const Output silent = run(std::string(KESTREL_CLI) + " mavlink listen udpin://127.0.0.1:" +
+                            std::to_string(kestrel::testing::free_udp_port()) + " --duration 0.3");
   EXPECT_EQ(silent.status, 1);
   EXPECT_THAT(silent.text, ::testing::HasSubstr("no MAVLink frame received"));
   const Output bad = run(std::string(KESTREL_CLI) + " mavlink listen tcp://1.2.3.4:5760");

@@ -8,6 +8,7 @@
 #include <kestrel/error.hpp>
 
 #include "connection_url.hpp"
+#include "fakes/udp_ports.hpp"
 #include "frame.hpp"
 #include "frame_parser.hpp"
 #include "messages.hpp"
@@ -57,12 +58,8 @@ TEST(MavlinkConnectionUrl, SaysWhatIsWrongWithABadOne) {
 }
 
 TEST(MavlinkUdp, UdpinAnswersWhoeverSpokeLastAndUdpoutHearsTheReply) {
-  ConnectionUrl in_url;
-  in_url.kind = ConnectionUrl::Kind::udp_in;
-  in_url.host = "127.0.0.1";
-  in_url.port = 0;  // any free port
-  in_url.text = "udpin://127.0.0.1:0";
-  UdpTransport listener(in_url);
+  auto listening = kestrel::testing::listening_udp();
+  UdpTransport& listener = *listening;
   const std::array<std::uint8_t, 3> hello = {1, 2, 3};
   EXPECT_FALSE(listener.send(hello)) << "nobody has spoken yet";
 
@@ -87,13 +84,8 @@ TEST(MavlinkUdp, UdpinAnswersWhoeverSpokeLastAndUdpoutHearsTheReply) {
 }
 
 TEST(MavlinkUdp, APortTakenIsRefusedWithItsName) {
-  ConnectionUrl url;
-  url.kind = ConnectionUrl::Kind::udp_in;
-  url.host = "127.0.0.1";
-  url.port = 0;
-  url.text = "udpin://127.0.0.1:0";
-  UdpTransport first(url);
-  const std::string taken = "udpin://127.0.0.1:" + std::to_string(first.local_port());
+  const auto first = kestrel::testing::listening_udp();
+  const std::string taken = "udpin://127.0.0.1:" + std::to_string(first->local_port());
   try {
     open_transport(parse_connection_url(taken));
     FAIL() << "a second socket bound the same port";
