@@ -12,6 +12,7 @@
 
 namespace kestrel::mavlink {
 
+/// One thread may receive while another sends (a link's reader thread and its nodes).
 class Transport {
  public:
   virtual ~Transport() = default;

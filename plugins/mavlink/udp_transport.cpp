@@ -63,9 +63,14 @@ UdpTransport::~UdpTransport() {
 }
 
 bool UdpTransport::send(std::span<const std::uint8_t> bytes) {
-  if (!have_peer_) return false;
+  sockaddr_in peer{};
+  {
+    std::lock_guard lock(peer_mutex_);
+    if (!have_peer_) return false;
+    peer = peer_;
+  }
   const ssize_t n =
-      ::sendto(fd_, bytes.data(), bytes.size(), MSG_NOSIGNAL, reinterpret_cast<const sockaddr*>(&peer_), sizeof peer_);
+      ::sendto(fd_, bytes.data(), bytes.size(), MSG_NOSIGNAL, reinterpret_cast<const sockaddr*>(&peer), sizeof peer);
   // ECONNREFUSED: the last datagram bounced (nobody listens there yet); the next may not.
   return n == static_cast<ssize_t>(bytes.size());
 }
@@ -85,6 +90,7 @@ std::size_t UdpTransport::receive(std::span<std::uint8_t> buffer, std::chrono::m
       throw Error("connection '" + url_.text + "': receive: " + std::strerror(errno));
     }
     if (url_.kind == ConnectionUrl::Kind::udp_in) {
+      std::lock_guard lock(peer_mutex_);
       peer_ = from;
       have_peer_ = true;
     }
@@ -95,6 +101,7 @@ std::size_t UdpTransport::receive(std::span<std::uint8_t> buffer, std::chrono::m
 std::string UdpTransport::describe() const {
   std::string text =
       (url_.kind == ConnectionUrl::Kind::udp_in ? "udpin " : "udpout ") + url_.host + ":" + std::to_string(url_.port);
+  std::lock_guard lock(peer_mutex_);
   if (have_peer_) text += ", peer " + text_of(peer_);
   return text;
 }

@@ -4,6 +4,8 @@
 // from an ephemeral port and hears the replies there.
 #include <netinet/in.h>
 
+#include <mutex>
+
 #include "transport.hpp"
 
 namespace kestrel::mavlink {
@@ -25,6 +27,7 @@ class UdpTransport : public Transport {
  private:
   ConnectionUrl url_;
   int fd_ = -1;
+  mutable std::mutex peer_mutex_;  // the receiving thread learns the peer the sending one uses
   bool have_peer_ = false;
   sockaddr_in peer_{};
 };
