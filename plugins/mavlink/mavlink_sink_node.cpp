@@ -8,6 +8,7 @@
 // autopilot is back (OffboardSession). docs/field.md.
 #include <fmt/format.h>
 
+#include <kestrel/geometry/frames.hpp>
 #include <kestrel/geometry/ned_enu.hpp>
 #include <kestrel/messages/attitude_target.hpp>
 #include <kestrel/messages/net_fire.hpp>
@@ -241,8 +242,7 @@ class MavlinkSink final : public Node {
     if (!state) return std::nullopt;
     msg::TrajectorySetpoint hold;
     hold.position = state->position;
-    const Eigen::Vector3d forward = state->orientation * Eigen::Vector3d::UnitX();
-    hold.yaw = std::atan2(forward.y(), forward.x());
+    hold.yaw = geometry::yaw_of(state->orientation);
     return hold;
   }
 
