@@ -26,8 +26,9 @@ namespace kestrel::mavlink {
 
 namespace {
 
-// POSITION_TARGET_TYPEMASK: position, velocity and yaw are used; acceleration and yaw rate ignored.
-constexpr std::uint16_t kPositionVelocityYaw = 64 | 128 | 256 | 2048;
+// POSITION_TARGET_TYPEMASK: position, velocity, acceleration (as feed-forward, not force) and yaw
+// are used; the yaw rate is ignored.
+constexpr std::uint16_t kPositionVelocityAccelerationYaw = 2048;
 
 }  // namespace
 
@@ -295,14 +296,18 @@ class MavlinkSink final : public Node {
     t.target_system = system;
     t.target_component = component;
     t.coordinate_frame = mav::frame_local_ned;
-    t.type_mask = kPositionVelocityYaw;
-    const Eigen::Vector3d p = geometry::enu_to_ned(sp.position), v = geometry::enu_to_ned(sp.velocity);
+    t.type_mask = kPositionVelocityAccelerationYaw;
+    const Eigen::Vector3d p = geometry::enu_to_ned(sp.position), v = geometry::enu_to_ned(sp.velocity),
+                          a = geometry::enu_to_ned(sp.acceleration);
     t.x = static_cast<float>(p.x());
     t.y = static_cast<float>(p.y());
     t.z = static_cast<float>(p.z());
     t.vx = static_cast<float>(v.x());
     t.vy = static_cast<float>(v.y());
     t.vz = static_cast<float>(v.z());
+    t.afx = static_cast<float>(a.x());
+    t.afy = static_cast<float>(a.y());
+    t.afz = static_cast<float>(a.z());
     t.yaw = static_cast<float>(geometry::yaw_enu_to_ned(sp.yaw));
     t.time_boot_ms = static_cast<std::uint32_t>(to_seconds(ctx.now()) * 1000.0);
     sent(ctx, link_->send(t), holding);

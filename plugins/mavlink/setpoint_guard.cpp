@@ -6,6 +6,10 @@
 
 namespace kestrel::mavlink {
 
+namespace {
+constexpr double kGravity = 9.81;
+}  // namespace
+
 std::optional<msg::TrajectorySetpoint> SetpointGuard::position(const msg::TrajectorySetpoint& in) {
   if (!in.position.allFinite() || !in.velocity.allFinite() || !in.acceleration.allFinite() || !std::isfinite(in.yaw) ||
       !std::isfinite(in.yaw_rate)) {
@@ -19,6 +23,13 @@ std::optional<msg::TrajectorySetpoint> SetpointGuard::position(const msg::Trajec
   if (speed > limits_.max_speed_mps) {
     out.velocity *= limits_.max_speed_mps / speed;
     ++counts_.speed_clamps;
+  }
+  // Tilt: a horizontal acceleration a needs a tilt of atan(a / g) to hold the height.
+  const double max_horizontal = kGravity * std::tan(limits_.max_tilt_deg * std::numbers::pi / 180.0);
+  const double horizontal = in.acceleration.head<2>().norm();
+  if (horizontal > max_horizontal) {
+    out.acceleration.head<2>() *= max_horizontal / horizontal;
+    ++counts_.tilt_clamps;
   }
   return out;
 }

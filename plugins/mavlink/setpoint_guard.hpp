@@ -22,7 +22,7 @@ struct GuardCounts {
   std::uint64_t non_finite = 0;     ///< commands refused for a NaN or an infinity
   std::uint64_t fence_clamps = 0;   ///< positions moved back inside the fence
   std::uint64_t speed_clamps = 0;   ///< velocities cut to the speed limit
-  std::uint64_t tilt_clamps = 0;    ///< attitudes tipped back to the tilt limit
+  std::uint64_t tilt_clamps = 0;    ///< attitudes tipped back to the tilt limit, accelerations cut to it
   std::uint64_t thrust_clamps = 0;  ///< thrusts cut into [0, 1]
 };
 

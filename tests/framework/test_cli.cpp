@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
+#include "fakes/scratch_path.hpp"
 #include "test_support.hpp"
 
 extern char** environ;
@@ -23,7 +24,7 @@ using ::testing::HasSubstr;
 namespace {
 
 fs::path temp_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("kestrel-cli-" + name + "-" + std::to_string(getpid()));
+  const fs::path dir = kestrel::testing::scratch_path("kestrel-cli-" + name);
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

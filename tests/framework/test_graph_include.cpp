@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "fakes/scratch_path.hpp"
 #include "test_support.hpp"
 
 using namespace kestrel;
@@ -17,7 +18,7 @@ namespace {
 // A folder of graph files for one test.
 class GraphFiles {
  public:
-  explicit GraphFiles(const std::string& name) : dir_(fs::temp_directory_path() / ("kestrel-include-" + name)) {
+  explicit GraphFiles(const std::string& name) : dir_(kestrel::testing::scratch_path("kestrel-include-" + name)) {
     fs::remove_all(dir_);
     fs::create_directories(dir_ / "chains");
   }

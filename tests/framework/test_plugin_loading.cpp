@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "fakes/scratch_path.hpp"
 #include "kestrel/abi.hpp"
 #include "test_support.hpp"
 
@@ -75,7 +76,7 @@ TEST(PluginLoading, RefusesAMissingSymbolWithDlerrorText) {
 }
 
 TEST(PluginLoading, RefusesACorruptFile) {
-  const fs::path dir = fs::temp_directory_path() / "kestrel-corrupt-plugin";
+  const fs::path dir = kestrel::testing::scratch_path("kestrel-corrupt-plugin");
   fs::create_directories(dir);
   const fs::path file = dir / "kestrel_corrupt.so";
   std::ofstream(file) << "this is not a shared library";
@@ -114,7 +115,7 @@ TEST(PluginLoading, AMalformedSpecIsRefusedWithThePluginsName) {
 }
 
 TEST(PluginLoading, ADirectoryOfMixedFilesLoadsEveryGoodPlugin) {
-  const fs::path dir = fs::temp_directory_path() / "kestrel-mixed-plugins";
+  const fs::path dir = kestrel::testing::scratch_path("kestrel-mixed-plugins");
   fs::remove_all(dir);
   fs::create_directories(dir);
   for (const auto& f : fs::directory_iterator(kBad)) fs::copy_file(f.path(), dir / f.path().filename());

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "fakes/scratch_path.hpp"
 #include "kestrel/version.hpp"
 #include "test_support.hpp"
 
@@ -53,7 +54,7 @@ std::string read(const std::filesystem::path& file) {
 }  // namespace
 
 TEST(Report, RecordsTheResolvedParametersHashVersionAndSeed) {
-  const auto dir = std::filesystem::temp_directory_path() / "kestrel-report-test";
+  const auto dir = kestrel::testing::scratch_path("kestrel-report-test");
   const auto report = run_and_read(dir, {"src.rate_hz=20", "s.shaper.amount=3"});
   EXPECT_EQ(report["kestrel_version"], KESTREL_VERSION_STRING);
   EXPECT_EQ(report["graph"]["seed"], 7);
@@ -74,7 +75,7 @@ TEST(Report, RecordsTheResolvedParametersHashVersionAndSeed) {
 }
 
 TEST(Report, MetricsDescribeThemselvesAndArtifactsAreListed) {
-  const auto dir = std::filesystem::temp_directory_path() / "kestrel-report-meta";
+  const auto dir = kestrel::testing::scratch_path("kestrel-report-meta");
   const auto report = run_and_read(dir, {});
   EXPECT_EQ(report["sink"]["count"], 10);
   const auto& meta = report["metrics_meta"]["sink.count"];

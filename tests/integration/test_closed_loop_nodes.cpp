@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "fakes/scratch_path.hpp"
 #include "kestrel/runtime/graph.hpp"
 #include "kestrel/runtime/plugin_host.hpp"
 #include "kestrel/runtime/run.hpp"
@@ -96,9 +97,10 @@ TEST(ClosedLoop, TheInterceptionIsReproducibleBitForBit) {
 // Detections blacked out for 2 s while the hunter closes in: the aim flies on for its timeout,
 // then backs off; when detections return the tracker starts a new track, the aim re-acquires
 // it, and the intercept still ends in a capture. The graph is sim_intercept.yaml with
-// detection_dropout between the height gate and the tracker (its loop part, edited, beside it).
+// detection_dropout between the height gate and the tracker (its parts copied beside it, the
+// aim part edited).
 TEST(ClosedLoop, ABlackoutMakesTheHunterHoldThenReacquire) {
-  std::ifstream in(KESTREL_SOURCE_DIR "/graphs/parts/intercept_loop.yaml");
+  std::ifstream in(KESTREL_SOURCE_DIR "/graphs/parts/intercept_aim.yaml");
   std::string yaml{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   const auto replace = [&](const std::string& from, const std::string& to) {
     const auto at = yaml.find(from);
@@ -111,9 +113,11 @@ TEST(ClosedLoop, ABlackoutMakesTheHunterHoldThenReacquire) {
   replace("  - {from: gate.detections, to: tracker.detections, policy: fifo 64}",
           "  - {from: gate.detections, to: blackout.detections, policy: fifo 64}\n"
           "  - {from: blackout.detections, to: tracker.detections, policy: fifo 64}");
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "kestrel-blackout-intercept";
-  std::filesystem::create_directories(dir / "parts");
-  std::ofstream(dir / "parts" / "intercept_loop.yaml") << yaml;
+  const std::filesystem::path dir = kestrel::testing::scratch_path("kestrel-blackout-intercept");
+  std::filesystem::create_directories(dir);
+  std::filesystem::copy(KESTREL_SOURCE_DIR "/graphs/parts", dir / "parts",
+                        std::filesystem::copy_options::overwrite_existing | std::filesystem::copy_options::recursive);
+  std::ofstream(dir / "parts" / "intercept_aim.yaml") << yaml;
   std::filesystem::copy_file(KESTREL_SOURCE_DIR "/graphs/sim_intercept.yaml", dir / "sim_intercept.yaml",
                              std::filesystem::copy_options::overwrite_existing);
   const RunResult r = run((dir / "sim_intercept.yaml").string(), {}, {}, 20.0);
@@ -165,5 +169,5 @@ TEST(RunStatistics, EachNodeReportsTheAgeOfWhatItPublishesSinceCapture) {
   EXPECT_NEAR(ms(node("tracker").latency, 0.5), 100.0, 2.0);
   EXPECT_LT(ms(node("intruder").latency, 0.99), 0.01);
   const std::string table = format_stats(r);
-  EXPECT_THAT(table, testing::HasSubstr("age p50 ms"));
+  EXPECT_THAT(table, ::testing::HasSubstr("age p50 ms"));
 }

@@ -8,12 +8,14 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "fakes/scratch_path.hpp"
+
 extern char** environ;
 namespace fs = std::filesystem;
 
 namespace {
 
-int kestrel(std::vector<std::string> args) {
+int run_kestrel(std::vector<std::string> args) {
   std::string cli = KESTREL_CLI;
   std::vector<char*> argv = {cli.data()};
   for (auto& a : args) argv.push_back(a.data());
@@ -33,11 +35,12 @@ std::string read(const fs::path& f) {
 }  // namespace
 
 TEST(Experiments, SweepRunsTheGridWithEverySeed) {
-  const fs::path dir = fs::temp_directory_path() / "kestrel-sweep-test";
+  const fs::path dir = kestrel::testing::scratch_path("kestrel-sweep-test");
   fs::remove_all(dir);
-  ASSERT_EQ(kestrel({"sweep", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--param",
-                     "tracker.filter.r=0.5:1.0:0.5", "--seeds", "2", "--duration", "0.5", "--report", dir.string()}),
-            0);
+  ASSERT_EQ(
+      run_kestrel({"sweep", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--param", "tracker.filter.r=0.5:1.0:0.5",
+                   "--seeds", "2", "--duration", "0.5", "--report", dir.string()}),
+      0);
   const std::string csv = read(dir / "sweep.csv");
   EXPECT_THAT(csv, ::testing::StartsWith("tracker.filter.r,seed,exit_code,"));
   EXPECT_THAT(csv, ::testing::HasSubstr("\n0.5,1,0,"));
@@ -48,8 +51,8 @@ TEST(Experiments, SweepRunsTheGridWithEverySeed) {
   EXPECT_TRUE(fs::exists(dir / "metrics_meta.json"));  // units for `kestrel plot sweep.csv`
   EXPECT_TRUE(fs::exists(dir / "runs" / "001_seed2" / "report.json"));
   // A bad parameter fails before any run, as an invalid graph.
-  EXPECT_EQ(kestrel({"sweep", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--param", "tracker.rr=0.5:1:0.5",
-                     "--report", (dir / "bad").string()}),
+  EXPECT_EQ(run_kestrel({"sweep", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--param", "tracker.rr=0.5:1:0.5",
+                         "--report", (dir / "bad").string()}),
             3);
   EXPECT_FALSE(fs::exists(dir / "bad" / "runs"));
 }
@@ -57,15 +60,15 @@ TEST(Experiments, SweepRunsTheGridWithEverySeed) {
 // A table of cases instead of a grid: each row once with its seed, an empty cell leaving the
 // graph's value; a row with a value out of range stops the sweep before any run.
 TEST(Experiments, SweepRunsATableOfCasesWithTheirSeeds) {
-  const fs::path dir = fs::temp_directory_path() / "kestrel-sweep-cases-test";
+  const fs::path dir = kestrel::testing::scratch_path("kestrel-sweep-cases-test");
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::ofstream(dir / "cases.csv") << "# tracker settings drawn at random\n"
                                       "tracker.filter.r,tracker.filter.q,seed\n"
                                       "0.5,,3\n"
                                       "\"2.0\",0.5,5\n";
-  ASSERT_EQ(kestrel({"sweep", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--cases", (dir / "cases.csv").string(),
-                     "--duration", "0.5", "--report", (dir / "out").string()}),
+  ASSERT_EQ(run_kestrel({"sweep", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--cases",
+                         (dir / "cases.csv").string(), "--duration", "0.5", "--report", (dir / "out").string()}),
             0);
   const std::string csv = read(dir / "out" / "sweep.csv");
   EXPECT_THAT(csv, ::testing::StartsWith("tracker.filter.r,tracker.filter.q,seed,exit_code,"));
@@ -89,18 +92,18 @@ TEST(Experiments, SweepRunsATableOfCasesWithTheirSeeds) {
   // Every case is checked first, not only the first and the last: the second row's r is out of
   // range, so nothing runs.
   std::ofstream(dir / "bad.csv") << "tracker.filter.r,seed\n1.0,1\n-1,2\n2.0,3\n";
-  EXPECT_EQ(kestrel({"sweep", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--cases", (dir / "bad.csv").string(),
-                     "--duration", "0.5", "--report", (dir / "bad").string()}),
+  EXPECT_EQ(run_kestrel({"sweep", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--cases",
+                         (dir / "bad.csv").string(), "--duration", "0.5", "--report", (dir / "bad").string()}),
             3);
   EXPECT_FALSE(fs::exists(dir / "bad" / "runs"));
 }
 
 TEST(Experiments, AbPairsSeedsAndNamesTheBetterGraph) {
-  const fs::path dir = fs::temp_directory_path() / "kestrel-ab-test";
+  const fs::path dir = kestrel::testing::scratch_path("kestrel-ab-test");
   fs::remove_all(dir);
-  ASSERT_EQ(kestrel({"ab", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml",
-                     KESTREL_SOURCE_DIR "/graphs/paper_tracking_particle.yaml", "--seeds", "2", "--duration", "1",
-                     "--report", dir.string()}),
+  ASSERT_EQ(run_kestrel({"ab", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml",
+                         KESTREL_SOURCE_DIR "/graphs/paper_tracking_particle.yaml", "--seeds", "2", "--duration", "1",
+                         "--report", dir.string()}),
             0);
   const auto ab = nlohmann::json::parse(read(dir / "ab.json"));
   EXPECT_EQ(ab.at("seeds"), 2);
@@ -129,11 +132,11 @@ TEST(Experiments, AbPairsSeedsAndNamesTheBetterGraph) {
 
 // One graph on both sides, a parameter changed on one: the A/B of a single tracker setting.
 TEST(Experiments, AbComparesSettingsOfOneGraph) {
-  const fs::path dir = fs::temp_directory_path() / "kestrel-ab-settings-test";
+  const fs::path dir = kestrel::testing::scratch_path("kestrel-ab-settings-test");
   fs::remove_all(dir);
-  ASSERT_EQ(kestrel({"ab", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml",
-                     KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--set-a", "tracker.filter.r=0.1", "--set-b",
-                     "tracker.filter.r=5.0", "--seeds", "2", "--duration", "1", "--report", dir.string()}),
+  ASSERT_EQ(run_kestrel({"ab", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml",
+                         KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--set-a", "tracker.filter.r=0.1", "--set-b",
+                         "tracker.filter.r=5.0", "--seeds", "2", "--duration", "1", "--report", dir.string()}),
             0);
   const auto ab = nlohmann::json::parse(read(dir / "ab.json"));
   EXPECT_EQ(ab.at("set_a"), nlohmann::json::array({"tracker.filter.r=0.1"}));
@@ -143,10 +146,10 @@ TEST(Experiments, AbComparesSettingsOfOneGraph) {
   EXPECT_NE(rmse.at("mean_a").get<double>(), rmse.at("mean_b").get<double>());
   EXPECT_THAT(read(dir / "ab.md"), ::testing::HasSubstr("with tracker.filter.r=5.0"));
   // An override one side's graph does not accept fails before any run, as an invalid graph.
-  EXPECT_EQ(
-      kestrel({"ab", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml",
-               "--set-b", "tracker.particles=10", "--report", (dir / "bad").string()}),
-      3);
+  EXPECT_EQ(run_kestrel({"ab", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml",
+                         KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--set-b", "tracker.particles=10",
+                         "--report", (dir / "bad").string()}),
+            3);
   EXPECT_FALSE(fs::exists(dir / "bad" / "runs"));
 }
 
@@ -155,16 +158,16 @@ TEST(Experiments, AbComparesSettingsOfOneGraph) {
 // track and of time, which MOTChallenge files do not have, and the count of messages the node
 // could not pair with ground truth.
 TEST(Experiments, MotCommandAndMotEvaluatorShareTheirKeys) {
-  const fs::path dir = fs::temp_directory_path() / "kestrel-mot-keys-test";
+  const fs::path dir = kestrel::testing::scratch_path("kestrel-mot-keys-test");
   fs::remove_all(dir);
   fs::create_directories(dir);
-  ASSERT_EQ(kestrel({"run", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--duration", "0.5", "--report",
-                     (dir / "run").string(), "--no-progress"}),
+  ASSERT_EQ(run_kestrel({"run", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--duration", "0.5", "--report",
+                         (dir / "run").string(), "--no-progress"}),
             0);
   const auto tracking = nlohmann::json::parse(read(dir / "run" / "report.json")).at("tracking");
   std::ofstream(dir / "gt.txt") << "1,1,0,0,10,10,1,0,0,5\n2,1,0,0,10,10,1,0,0,5\n";
-  ASSERT_EQ(kestrel({"mot", (dir / "gt.txt").string(), (dir / "gt.txt").string(), "--dist", "0.5", "--json",
-                     (dir / "mot.json").string()}),
+  ASSERT_EQ(run_kestrel({"mot", (dir / "gt.txt").string(), (dir / "gt.txt").string(), "--dist", "0.5", "--json",
+                         (dir / "mot.json").string()}),
             0);
   const auto mot = nlohmann::json::parse(read(dir / "mot.json"));
   const std::set<std::string> tracker_only = {"rmse_m", "rmse_axes_m",     "rmse_body_m", "bias_body_m",

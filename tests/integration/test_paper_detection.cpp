@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "built_plugins.hpp"
+#include "fakes/scratch_path.hpp"
 #include "kestrel/runtime/graph.hpp"
 #include "kestrel/runtime/run.hpp"
 
@@ -39,7 +40,7 @@ std::string read(const std::filesystem::path& f) {
 }  // namespace
 
 TEST(PaperDetection, FindsTheIntruderAtFiveMetres) {
-  const auto dir = std::filesystem::temp_directory_path() / "kestrel-paper-detection";
+  const auto dir = kestrel::testing::scratch_path("kestrel-paper-detection");
   std::filesystem::remove_all(dir);
   const auto r = run_paper_graph(4.0, {"intruder.distance_m=5.0"}, dir.string());
   ASSERT_EQ(r.outcome, RunOutcome::completed) << (r.errors.empty() ? "" : r.errors.front());
@@ -64,8 +65,8 @@ TEST(PaperDetection, FindsTheIntruderAtFiveMetres) {
 }
 
 TEST(PaperDetection, LockstepRunsAreBitIdenticalForASeed) {
-  const auto a = std::filesystem::temp_directory_path() / "kestrel-paper-a";
-  const auto b = std::filesystem::temp_directory_path() / "kestrel-paper-b";
+  const auto a = kestrel::testing::scratch_path("kestrel-paper-a");
+  const auto b = kestrel::testing::scratch_path("kestrel-paper-b");
   std::filesystem::remove_all(a);
   std::filesystem::remove_all(b);
   const auto first = run_paper_graph(1.0, {}, a.string());

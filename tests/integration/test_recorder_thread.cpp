@@ -7,6 +7,7 @@
 
 #include <filesystem>
 
+#include "fakes/scratch_path.hpp"
 #include "kestrel/mcap/reader.hpp"
 #include "kestrel/runtime/graph.hpp"
 #include "kestrel/runtime/plugin_host.hpp"
@@ -16,7 +17,7 @@ using namespace kestrel;
 namespace fs = std::filesystem;
 
 TEST(RecorderThread, UnderRealtimeEveryMessageIsWrittenOrCountedAsDropped) {
-  const fs::path dir = fs::temp_directory_path() / "kestrel-recorder-thread";
+  const fs::path dir = kestrel::testing::scratch_path("kestrel-recorder-thread");
   fs::create_directories(dir);
   const fs::path file = dir / "truth.mcap";
   PluginHost plugins;

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "built_plugins.hpp"
+#include "fakes/scratch_path.hpp"
 #include "kestrel/mcap/reader.hpp"
 #include "kestrel/runtime/graph.hpp"
 #include "kestrel/runtime/run.hpp"
@@ -42,7 +43,7 @@ std::string bytes(const fs::path& f) {
 }
 
 fs::path scratch(const std::string& name) {
-  const auto dir = fs::temp_directory_path() / "kestrel-recording";
+  const auto dir = kestrel::testing::scratch_path("kestrel-recording");
   fs::create_directories(dir);
   return dir / name;
 }

@@ -17,6 +17,7 @@
 
 #include "built_plugins.hpp"
 #include "camera_info.hpp"
+#include "fakes/scratch_path.hpp"
 #include "kestrel/runtime/graph.hpp"
 #include "kestrel/runtime/run.hpp"
 #include "pair_source.hpp"
@@ -32,7 +33,7 @@ PluginHost& plugins() { return kestrel::testing::built_plugins(); }
 
 // Per process: ctest runs each test as its own process, in parallel, and each records its own run.
 fs::path scratch(const std::string& name) {
-  const auto dir = fs::temp_directory_path() / ("kestrel-stereo-images-" + std::to_string(getpid())) / name;
+  const auto dir = kestrel::testing::scratch_path("kestrel-stereo-images") / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

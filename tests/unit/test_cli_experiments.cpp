@@ -14,6 +14,7 @@
 #include "csv_format.hpp"
 #include "experiment_analysis.hpp"
 #include "experiment_output.hpp"
+#include "fakes/scratch_path.hpp"
 #include "kestrel/error.hpp"
 #include "metrics_meta.hpp"
 #include "run_plan.hpp"
@@ -149,7 +150,7 @@ const nlohmann::json kSweepMeta = {
     {"tracking.lag_s", {{"unit", "s"}, {"higher_is_better", false}, {"by_magnitude", true}}}};
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / (name + "-" + std::to_string(::getpid()));
+  const fs::path dir = kestrel::testing::scratch_path(name);
   fs::remove_all(dir);
   return dir;
 }

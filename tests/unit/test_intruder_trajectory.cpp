@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "fakes/scratch_path.hpp"
 #include "kestrel/runtime/graph.hpp"
 #include "kestrel/runtime/plugin_host.hpp"
 #include "kestrel/runtime/run.hpp"
@@ -27,7 +28,7 @@ void expect_consistent_velocity(const Trajectory& traj, double t) {
 }
 
 std::filesystem::path write_csv(const std::string& name, const std::string& text) {
-  const auto file = std::filesystem::temp_directory_path() / name;
+  const auto file = kestrel::testing::scratch_path(name);
   std::ofstream(file) << text;
   return file;
 }
@@ -164,7 +165,7 @@ TEST(RecordedFlight, BadFilesNameTheFileAndLine) {
 TEST(IntruderNode, PublishesTruthAtItsRateAndThePlotIsWritten) {
   PluginHost host;
   host.load_search_path();
-  const auto dir = std::filesystem::temp_directory_path() / "kestrel-intruder-plot";
+  const auto dir = kestrel::testing::scratch_path("kestrel-intruder-plot");
   std::filesystem::remove_all(dir);
   const std::string yaml = R"(nodes:
   - {id: intruder, type: intruder, params: {rate_hz: 30, distance_m: 7.5}}

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <functional>
 #include <kestrel/geometry/frames.hpp>
+#include <kestrel/vehicle/multirotor_dynamics.hpp>
 
 #include "lee_position_control.hpp"
-#include "multirotor_dynamics.hpp"
 
 using namespace kestrel;
 using namespace kestrel::control;
@@ -34,9 +34,9 @@ msg::TrajectorySetpoint setpoint_at(const Eigen::Vector3d& p, double yaw = 0.0) 
 // simulator at 1 kHz in between, as the quadrotor_sim / lee_controller graph runs them.
 struct Flight {
   LeePositionControl control{kFirefly, LeeGains{}};
-  quadrotor::MultirotorDynamics dynamics{kFirefly};
-  quadrotor::RigidBodyState state;
-  quadrotor::Environment env;
+  vehicle::MultirotorDynamics dynamics{kFirefly};
+  vehicle::RigidBodyState state;
+  vehicle::Environment env;
 
   explicit Flight(const Eigen::Vector3d& start) {
     env.ground_z = -std::numeric_limits<double>::infinity();

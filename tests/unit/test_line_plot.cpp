@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 
+#include "fakes/scratch_path.hpp"
 #include "kestrel/error.hpp"
 #include "kestrel/plot/line_plot.hpp"
 
@@ -20,7 +21,7 @@ TEST(NiceTicks, StepsAreOneTwoOrFiveTimesAPowerOfTen) {
 }
 
 TEST(SavePng, DrawsEachPanelAndItsSeries) {
-  const auto file = std::filesystem::temp_directory_path() / "kestrel-plot-test.png";
+  const auto file = kestrel::testing::scratch_path("kestrel-plot-test.png");
   Panel panel;
   panel.title = "line";
   Series s;
@@ -46,7 +47,7 @@ TEST(SavePng, DrawsEachPanelAndItsSeries) {
 // The legend goes to the corner with the fewest data points: a curve ending in the top-right
 // corner, where the legend used to sit, stays visible.
 TEST(SavePng, TheLegendDoesNotHideTheData) {
-  const auto file = std::filesystem::temp_directory_path() / "kestrel-plot-legend-test.png";
+  const auto file = kestrel::testing::scratch_path("kestrel-plot-legend-test.png");
   auto blue_pixels = [&](const std::string& label) {
     Panel panel;
     Series climbing;  // unlabelled: no swatch of its colour in the legend

@@ -84,3 +84,23 @@ TEST(SetpointGuard, ThrustIsNormalisedByTheHoverThrust) {
   EXPECT_DOUBLE_EQ(guard.normalised_thrust(a, 0.45), 0.0);
   EXPECT_EQ(guard.counts().thrust_clamps, 2u);
 }
+
+// A 35 degree tilt holds the height with at most g tan(35 deg) = 6.87 m/s^2 sideways; the
+// vertical part and the direction are kept.
+TEST(SetpointGuard, CutsAHorizontalAccelerationToWhatTheTiltLimitAllows) {
+  GuardLimits limits;
+  limits.max_tilt_deg = 35;
+  SetpointGuard guard(limits);
+  msg::TrajectorySetpoint sp;
+  sp.position = {0, 0, 5};
+  sp.acceleration = {3, 4, 1};  // 5 m/s^2 sideways: allowed
+  EXPECT_EQ(guard.position(sp)->acceleration, sp.acceleration);
+  sp.acceleration = {6, 8, 1};  // 10 m/s^2 sideways
+  const auto cut = guard.position(sp);
+  ASSERT_TRUE(cut);
+  const double allowed = 9.81 * std::tan(35 * pi / 180);
+  EXPECT_NEAR(cut->acceleration.head<2>().norm(), allowed, 1e-9);
+  EXPECT_NEAR(cut->acceleration.x() / cut->acceleration.y(), 0.75, 1e-12);
+  EXPECT_EQ(cut->acceleration.z(), 1.0);
+  EXPECT_EQ(guard.counts().tilt_clamps, 1u);
+}

@@ -7,6 +7,7 @@
 #include <kestrel/messages/ground_truth.hpp>
 #include <kestrel/messages/stereo_frame.hpp>
 
+#include "fakes/scratch_path.hpp"
 #include "kestrel/mcap/writer.hpp"
 #include "kestrel/ros2/cdr.hpp"
 #include "kestrel/ros2/definitions.hpp"
@@ -116,7 +117,7 @@ std::vector<std::uint8_t> driver_camera_info(double tx) {
 }
 
 fs::path file(const std::string& name) {
-  const auto dir = fs::temp_directory_path() / "kestrel-mcap-source";
+  const auto dir = kestrel::testing::scratch_path("kestrel-mcap-source");
   fs::create_directories(dir);
   return dir / name;
 }

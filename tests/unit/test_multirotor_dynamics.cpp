@@ -4,12 +4,11 @@
 
 #include <cmath>
 #include <kestrel/vehicle/multirotor.hpp>
-
-#include "multirotor_dynamics.hpp"
-#include "wind.hpp"
+#include <kestrel/vehicle/multirotor_dynamics.hpp>
+#include <kestrel/vehicle/wind.hpp>
 
 using namespace kestrel;
-using namespace kestrel::quadrotor;
+using namespace kestrel::vehicle;
 
 namespace {
 

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <thread>
 
+#include "fakes/scratch_path.hpp"
 #include "imu_protocol.hpp"
 #include "imu_stream.hpp"
 
@@ -53,7 +54,7 @@ struct FakeImuPort {
 };
 
 std::filesystem::path link_path() {
-  const auto dir = std::filesystem::temp_directory_path() / "kestrel-imu-port";
+  const auto dir = kestrel::testing::scratch_path("kestrel-imu-port");
   std::filesystem::create_directories(dir);
   return dir / "ttyOCAMS";
 }

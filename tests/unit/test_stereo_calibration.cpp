@@ -13,6 +13,7 @@
 
 #include "camera_info.hpp"
 #include "chessboard_calibration.hpp"
+#include "fakes/scratch_path.hpp"
 #include "stereo_rectifier.hpp"
 
 using namespace kestrel;
@@ -54,7 +55,7 @@ struct Rig {
 };
 
 std::filesystem::path write(const std::string& name, const std::string& text) {
-  const auto dir = std::filesystem::temp_directory_path() / "kestrel-stereo-calibration";
+  const auto dir = kestrel::testing::scratch_path("kestrel-stereo-calibration");
   std::filesystem::create_directories(dir);
   std::ofstream(dir / name) << text;
   return dir / name;

@@ -8,6 +8,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
 
+#include "fakes/scratch_path.hpp"
 #include "kestrel/runtime/graph.hpp"
 #include "kestrel/runtime/plugin_host.hpp"
 #include "kestrel/runtime/run.hpp"
@@ -60,7 +61,7 @@ std::vector<Row> read_csv(const std::filesystem::path& file, std::string& header
 }
 
 std::filesystem::path run_plot(const std::string& name, int count, int max_samples) {
-  const auto dir = std::filesystem::temp_directory_path() / ("kestrel-trajectory-plot-" + name);
+  const auto dir = kestrel::testing::scratch_path("kestrel-trajectory-plot-" + name);
   std::filesystem::remove_all(dir);
   const std::string yaml = R"(nodes:
   - {id: scene, type: scene_source, params: {rate_hz: 30, count: )" +
@@ -154,7 +155,7 @@ TEST(TrajectoryPlot, KeepsAtMostMaxSamplesPerSeries) {
 }
 
 TEST(TrajectoryPlot, SamplesBeyondTheLimitAreCountedInTheReport) {
-  const auto dir = std::filesystem::temp_directory_path() / "kestrel-plot-dropped";
+  const auto dir = kestrel::testing::scratch_path("kestrel-plot-dropped");
   const RunResult r = run(intruder_graph("{name: cut, max_samples: 50}"), dir);
   ASSERT_EQ(r.outcome, RunOutcome::completed);
   const auto& section = r.report.at("plot");
@@ -178,7 +179,7 @@ TEST(TrajectoryPlot, SamplesBeyondTheLimitAreCountedInTheReport) {
 }
 
 TEST(TrajectoryPlot, NothingDroppedUnderTheLimit) {
-  const auto dir = std::filesystem::temp_directory_path() / "kestrel-plot-kept";
+  const auto dir = kestrel::testing::scratch_path("kestrel-plot-kept");
   const RunResult r = run(intruder_graph("{}"), dir);
   ASSERT_EQ(r.outcome, RunOutcome::completed);
   EXPECT_EQ(r.report.at("plot").at("samples"), 60);
@@ -187,8 +188,8 @@ TEST(TrajectoryPlot, NothingDroppedUnderTheLimit) {
 }
 
 TEST(TrajectoryPlot, TheOldOutputFolderIsIgnoredAndNothingIsWrittenThere) {
-  const auto dir = std::filesystem::temp_directory_path() / "kestrel-plot-report";
-  const auto old = std::filesystem::temp_directory_path() / "kestrel-plot-old-folder";
+  const auto dir = kestrel::testing::scratch_path("kestrel-plot-report");
+  const auto old = kestrel::testing::scratch_path("kestrel-plot-old-folder");
   std::filesystem::remove_all(old);
   const RunResult r = run(intruder_graph("{output_dir: " + old.string() + "}"), dir);
   ASSERT_EQ(r.outcome, RunOutcome::completed);

@@ -1,12 +1,12 @@
-#include "multirotor_dynamics.hpp"
+#include "kestrel/vehicle/multirotor_dynamics.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <kestrel/geometry/frames.hpp>
 
-namespace kestrel::quadrotor {
+namespace kestrel::vehicle {
 
-MultirotorDynamics::MultirotorDynamics(vehicle::Multirotor vehicle)
+MultirotorDynamics::MultirotorDynamics(Multirotor vehicle)
     : vehicle_(std::move(vehicle)),
       wrench_matrix_(vehicle_.wrench_matrix()),
       inertia_(vehicle_.inertia_kg_m2),
@@ -90,4 +90,4 @@ void MultirotorDynamics::contact(RigidBodyState& s, const Environment& env) cons
   s.orientation = Eigen::AngleAxisd(geometry::yaw_of(s.orientation), Eigen::Vector3d::UnitZ());
 }
 
-}  // namespace kestrel::quadrotor
+}  // namespace kestrel::vehicle

@@ -1,8 +1,8 @@
-#include "wind.hpp"
+#include "kestrel/vehicle/wind.hpp"
 
 #include <cmath>
 
-namespace kestrel::quadrotor {
+namespace kestrel::vehicle {
 
 Wind::Wind(Eigen::Vector3d mean_m_s, double gust_std_m_s, double gust_time_constant_s, std::uint64_t seed)
     : mean_(std::move(mean_m_s)), std_(gust_std_m_s), time_constant_(gust_time_constant_s), random_(seed) {
@@ -19,4 +19,4 @@ Eigen::Vector3d Wind::advance(double dt) {
   return current();
 }
 
-}  // namespace kestrel::quadrotor
+}  // namespace kestrel::vehicle

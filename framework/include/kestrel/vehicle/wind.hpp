@@ -6,7 +6,7 @@
 #include <Eigen/Core>
 #include <random>
 
-namespace kestrel::quadrotor {
+namespace kestrel::vehicle {
 
 class Wind {
  public:
@@ -24,4 +24,4 @@ class Wind {
   std::normal_distribution<double> normal_{0.0, 1.0};
 };
 
-}  // namespace kestrel::quadrotor
+}  // namespace kestrel::vehicle

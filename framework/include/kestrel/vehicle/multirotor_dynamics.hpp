@@ -6,10 +6,11 @@
 // attitude as the body-to-world quaternion, body rates, and the speed of each rotor.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
-#include <kestrel/vehicle/multirotor.hpp>
 #include <limits>
 
-namespace kestrel::quadrotor {
+#include "kestrel/vehicle/multirotor.hpp"
+
+namespace kestrel::vehicle {
 
 struct RigidBodyState {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();               ///< world, m
@@ -29,7 +30,7 @@ struct Environment {
 
 class MultirotorDynamics {
  public:
-  explicit MultirotorDynamics(vehicle::Multirotor vehicle);
+  explicit MultirotorDynamics(Multirotor vehicle);
 
   /// Advances `s` by dt with the motors driven towards `commanded` (rad/s, clamped to the motor
   /// range): one RK4 step, then ground contact.
@@ -44,7 +45,7 @@ class MultirotorDynamics {
 
   /// True while the vehicle rests on the ground (after the last step).
   bool on_ground() const { return on_ground_; }
-  const vehicle::Multirotor& vehicle() const { return vehicle_; }
+  const Multirotor& vehicle() const { return vehicle_; }
 
  private:
   struct Derivative {
@@ -57,10 +58,10 @@ class MultirotorDynamics {
   static RigidBodyState advanced(const RigidBodyState& s, const Derivative& d, double h);
   void contact(RigidBodyState& s, const Environment& env) const;
 
-  vehicle::Multirotor vehicle_;
+  Multirotor vehicle_;
   Eigen::MatrixXd wrench_matrix_;
   Eigen::Vector3d inertia_, inverse_inertia_;
   mutable bool on_ground_ = false;
 };
 
-}  // namespace kestrel::quadrotor
+}  // namespace kestrel::vehicle
