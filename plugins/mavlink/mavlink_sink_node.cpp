@@ -17,6 +17,7 @@
 #include <numbers>
 
 #include "autopilot_status.hpp"
+#include "connection_param.hpp"
 #include "link.hpp"
 #include "offboard_session.hpp"
 #include "setpoint_guard.hpp"
@@ -63,8 +64,8 @@ class MavlinkSink final : public Node {
   static NodeSpec spec() {
     using C = MavlinkSinkConfig;
     ConfigSpec<C> c;
-    c.param("connection", &C::connection)
-        .describe("the link: udpin://HOST:PORT, udpout://HOST:PORT or serial:///dev/PORT:BAUD (MAVSDK's forms)");
+    declare_connection(c, &C::connection,
+                       "the link: udpin://HOST:PORT, udpout://HOST:PORT or serial:///dev/PORT:BAUD (MAVSDK's forms)");
     c.param("command", &C::command)
         .one_of({"position", "attitude"})
         .describe("what is flown: the setpoint input as position targets, or the attitude input");
@@ -106,8 +107,6 @@ class MavlinkSink final : public Node {
     c.param("fence_max_m", &C::fence_max_m).with_unit("m").describe("geofence box, upper corner (world ENU)");
     c.param("max_speed_mps", &C::max_speed_mps).with_unit("m/s").range(0.1, 50.0).describe("speed limit");
     c.param("max_tilt_deg", &C::max_tilt_deg).with_unit("deg").range(5.0, 80.0).describe("tilt limit");
-    c.rule("connection is udpin://HOST:PORT, udpout://HOST:PORT or serial:///dev/PORT[:BAUD]", {"connection"},
-           [](const C& config) { return valid_connection_url(config.connection); });
     c.rule("fence_min_m < fence_max_m", {"fence_min_m", "fence_max_m"},
            [](const C& config) { return (config.fence_min_m.array() < config.fence_max_m.array()).all(); });
     return NodeSpec("mavlink_sink", "Flies the vehicle through its autopilot over MAVLink (offboard / GUIDED)")

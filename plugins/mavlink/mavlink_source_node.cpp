@@ -7,6 +7,7 @@
 #include <kestrel/plugin.hpp>
 
 #include "autopilot_status.hpp"
+#include "connection_param.hpp"
 #include "link.hpp"
 #include "vehicle_state_conversion.hpp"
 
@@ -28,8 +29,8 @@ class MavlinkSource final : public Node {
   static NodeSpec spec() {
     using C = MavlinkSourceConfig;
     ConfigSpec<C> c;
-    c.param("connection", &C::connection)
-        .describe("the link: udpin://HOST:PORT, udpout://HOST:PORT or serial:///dev/PORT:BAUD (MAVSDK's forms)");
+    declare_connection(c, &C::connection,
+                       "the link: udpin://HOST:PORT, udpout://HOST:PORT or serial:///dev/PORT:BAUD (MAVSDK's forms)");
     c.param("state_from", &C::state_from)
         .one_of({"auto", "local_position", "odometry"})
         .describe(
@@ -44,8 +45,6 @@ class MavlinkSource final : public Node {
         .with_unit("s")
         .range(0.1, 60.0)
         .describe("the link is down when the autopilot's last heartbeat is older");
-    c.rule("connection is udpin://HOST:PORT, udpout://HOST:PORT or serial:///dev/PORT[:BAUD]", {"connection"},
-           [](const C& config) { return valid_connection_url(config.connection); });
     return NodeSpec("mavlink_source", "The vehicle's state and status from its autopilot over MAVLink")
         .details(
             "Publishes a VehicleState for each new position or odometry message, converted from NED/FRD to kestrel's "

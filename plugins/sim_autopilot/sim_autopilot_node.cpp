@@ -16,6 +16,7 @@
 #include <kestrel/vehicle/simulated_multirotor.hpp>
 #include <memory>
 
+#include "connection_param.hpp"
 #include "connection_url.hpp"
 #include "flight_control.hpp"
 #include "frame_parser.hpp"
@@ -51,8 +52,8 @@ class SimAutopilot final : public Node {
     using C = SimAutopilotConfig;
     using G = FlightControlGains;
     ConfigSpec<C> c;
-    c.param("connection", &C::connection)
-        .describe("the link, as PX4 SITL's: udpout://HOST:PORT, udpin://HOST:PORT or serial:///dev/PORT:BAUD");
+    mavlink::declare_connection(
+        c, &C::connection, "the link, as PX4 SITL's: udpout://HOST:PORT, udpin://HOST:PORT or serial:///dev/PORT:BAUD");
     c.param("rate_hz", &C::rate_hz).with_unit("Hz").range(20.0, 2000.0).describe("link polling and `state` rate");
     c.param("telemetry_hz", &C::telemetry_hz)
         .with_unit("Hz")
@@ -116,8 +117,6 @@ class SimAutopilot final : public Node {
         .describe("rate loop: angular acceleration per rad/s of rate error");
     c.param("rate_i", &C::gains, &G::rate_i).with_unit("1/s^2").range(0.0, 1000.0).describe("rate loop: integral gain");
     c.param("rate_d", &C::gains, &G::rate_d).range(0.0, 10.0).describe("rate loop: derivative gain");
-    c.rule("connection is udpin://HOST:PORT, udpout://HOST:PORT or serial:///dev/PORT[:BAUD]", {"connection"},
-           [](const C& k) { return mavlink::valid_connection_url(k.connection); });
     c.rule("integration_hz >= control_hz >= rate_hz", {"integration_hz", "control_hz", "rate_hz"},
            [](const C& k) { return k.sim.integration_hz >= k.control_hz && k.control_hz >= k.rate_hz; });
     return NodeSpec("sim_autopilot", "Simulated PX4 vehicle on a MAVLink link, for software-in-the-loop runs")
