@@ -38,7 +38,7 @@ TEST(PluginLoading, GoodPluginRegistersItsTypes) {
   // types it needs, the runtime registers none.
   EXPECT_THAT(info.messages,
               ::testing::UnorderedElementsAre("test.Number", "test.Blob", "test.Counted", "kestrel.Detections",
-                                              "kestrel.GroundTruth", "kestrel.Tracks"));
+                                              "kestrel.GroundTruth", "kestrel.Tracks", "kestrel.NetFire"));
   const NodeType* relay = host.registry().find_node("relay");
   ASSERT_NE(relay, nullptr);
   EXPECT_EQ(relay->plugin, kGood.string());

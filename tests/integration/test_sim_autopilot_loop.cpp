@@ -131,3 +131,50 @@ TEST(FieldIntercept, WithoutAnAutopilotSaysNoHeartbeatAndExitsWithOne) {
   EXPECT_THAT(text, ::testing::HasSubstr("link"));
   std::filesystem::remove_all(dir);
 }
+
+namespace {
+
+// The loop graph with fire orders at 0.5 s (before the vehicle is armed and in offboard) and at
+// 4 s (flying), into the sink.
+std::string fire_graph(const std::string& port, const std::string& sink_params, const std::string& vehicle_params) {
+  static const bool loaded = kestrel::testing::built_plugins().load(KESTREL_TEST_PLUGIN_DIR "/kestrel_test_nodes.so");
+  EXPECT_TRUE(loaded);
+  std::string yaml = loop_graph("udpin://127.0.0.1:" + port, "udpout://127.0.0.1:" + port, "position_m: [0, 0, 1.5]");
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    const auto at = yaml.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) yaml.replace(at, from.size(), to);
+  };
+  replace("arm: true}", "arm: true, " + sink_params + "}");
+  replace("'udpout://127.0.0.1:" + port + "'}", "'udpout://127.0.0.1:" + port + "', " + vehicle_params + "}");
+  replace("connections:\n",
+          "  - {id: orders, type: fire_orders, params: {first_s: 0.5, second_s: 4.0}}\n"
+          "connections:\n  - {from: orders.fire, to: link.fire, policy: fifo 16}\n");
+  return yaml;
+}
+
+}  // namespace
+
+// The fire order reaches the launcher only when the vehicle is armed, in offboard and the net is
+// armed: then as the servo (or relay) command the vehicle's launcher output answers.
+TEST(SimAutopilotLoop, AFireOrderReachesTheLauncherOnlyWhenFlyingAndTheNetIsArmed) {
+  struct Case {
+    std::string sink, vehicle;
+    int fired, refused, launched;
+  };
+  for (const Case& c : {Case{"net_armed: true", "", 1, 1, 1},
+                        Case{"net_armed: true, fire_command: relay, fire_channel: 2, fire_value: 1",
+                             "launcher: relay, launcher_channel: 2, launcher_threshold: 1", 1, 1, 1},
+                        Case{"net_armed: true, fire_channel: 7", "", 1, 1, 0},  // not the launcher's output
+                        Case{"net_armed: false", "", 0, 2, 0}}) {
+    SCOPED_TRACE(c.sink);
+    const std::string port = std::to_string(kestrel::testing::free_udp_port());
+    const std::string vehicle = c.vehicle.empty() ? "launcher_channel: 9" : c.vehicle;
+    const RunResult r = kestrel::testing::run_built_graph(
+        GraphSource::from_string(fire_graph(port, c.sink, vehicle), "fire.yaml"), 5.0);
+    ASSERT_EQ(r.outcome, RunOutcome::completed) << (r.errors.empty() ? "" : r.errors.front());
+    EXPECT_EQ(r.report.at("link").at("fired"), c.fired);
+    EXPECT_EQ(r.report.at("link").at("fire_refused"), c.refused);
+    EXPECT_EQ(r.report.at("hunter").at("fire_orders"), c.launched);
+  }
+}
