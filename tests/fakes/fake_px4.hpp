@@ -1,9 +1,9 @@
 #pragma once
 // A PX4 autopilot as far as a companion's MAVLink tests need one, on a thread of its own over
-// loopback UDP: it sends heartbeats (2 Hz) and its state (50 Hz) to a udpin port, follows PX4's
-// offboard rule (the mode is granted only with setpoints arriving, at least 10 in the last half
-// second), arms on COMPONENT_ARM_DISARM, acknowledges each command, and records what it received.
-// `silence(from, to)` stops its heartbeats for a while (a radio link lost).
+// loopback UDP: it sends heartbeats (2 Hz) and a fixed state (50 Hz) to a udpin port, plays PX4's
+// offboard rules as sim_autopilot does (OffboardRules: offboard only with a setpoint stream, hold
+// when it stops, an ack for each command), and records what it received. `silence(from, to)`
+// stops its heartbeats for a while (a radio link lost).
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -15,6 +15,7 @@
 #include "frame.hpp"
 #include "frame_parser.hpp"
 #include "messages.hpp"
+#include "offboard_rules.hpp"
 #include "udp_transport.hpp"
 
 namespace kestrel::testing {
@@ -62,16 +63,7 @@ class FakePx4 {
       const double t = now();
       if (t >= next_heartbeat) {
         next_heartbeat = t + 0.5;
-        if (!(t >= silent_from_ && t < silent_to_)) {
-          mavlink::Heartbeat hb;
-          hb.type = mavlink::mav::type_quadrotor;
-          hb.autopilot = mavlink::mav::autopilot_px4;
-          hb.base_mode =
-              mavlink::mav::mode_flag_custom_mode_enabled | (armed_ ? mavlink::mav::mode_flag_safety_armed : 0);
-          hb.custom_mode = offboard_ ? 6u << 16 : 3u << 16;  // offboard, or position
-          hb.system_status = mavlink::mav::state_active;
-          link_.send(px4.encode(hb));
-        }
+        if (!(t >= silent_from_ && t < silent_to_)) link_.send(px4.encode(rules_.heartbeat()));
       }
       if (t >= next_state) {
         next_state = t + 0.02;
@@ -87,31 +79,12 @@ class FakePx4 {
         frames = parser_.feed(std::span(buffer.data(), n));
         for (const auto& f : frames) received_.push_back({t, f});
       }
-      for (const auto& f : frames) {
-        if (f.is<mavlink::SetPositionTargetLocalNed>() || f.is<mavlink::SetAttitudeTarget>())
-          setpoint_times_.push_back(t);
-        if (f.is<mavlink::CommandLong>()) answer(px4, f.as<mavlink::CommandLong>(), t);
-      }
-      // PX4 leaves offboard when the setpoints stop (COM_OF_LOSS_T, 0.5 s here).
-      if (offboard_ && (setpoint_times_.empty() || t - setpoint_times_.back() > 0.5)) offboard_ = false;
+      for (const auto& f : frames)
+        if (const auto answer = rules_.on_frame(f, t, false).ack) link_.send(px4.encode(*answer));
+      rules_.step(t);  // PX4 leaves offboard when the setpoints stop (COM_OF_LOSS_T, 0.5 s here)
+      offboard_ = rules_.mode() == sim_autopilot::FlightMode::offboard;
+      armed_ = rules_.armed();
     }
-  }
-
-  void answer(mavlink::FrameWriter& px4, const mavlink::CommandLong& c, double t) {
-    mavlink::CommandAck ack;
-    ack.command = c.command;
-    ack.result = mavlink::mav::result_accepted;
-    if (c.command == mavlink::mav::cmd_do_set_mode && c.param2 == 6.0f) {
-      std::size_t recent = 0;
-      for (const double s : setpoint_times_) recent += t - s <= 0.5 ? 1 : 0;
-      if (recent >= 10)
-        offboard_ = true;
-      else
-        ack.result = mavlink::mav::result_temporarily_rejected;
-    } else if (c.command == mavlink::mav::cmd_component_arm_disarm) {
-      armed_ = c.param1 == 1.0f;
-    }
-    link_.send(px4.encode(ack));
   }
 
   mavlink::UdpTransport link_;
@@ -119,7 +92,7 @@ class FakePx4 {
   mutable std::mutex mutex_;
   mavlink::FrameParser parser_;
   std::vector<Received> received_;
-  std::vector<double> setpoint_times_;
+  sim_autopilot::OffboardRules rules_;  // the fake's thread's only
   std::atomic<bool> offboard_{false}, armed_{false}, stop_{false};
   std::atomic<double> silent_from_{1e9}, silent_to_{1e9};
   std::thread thread_;  // last: starts once everything above exists
