@@ -191,6 +191,7 @@ OUTCOMES = {
          "setpoints at 20 Hz or more, sent and received"),
         ("r['hunter']['bad_checksum'] == 0 and r['telemetry']['bad_checksum'] == 0", "no frame with a bad CRC"),
         ("r['hunter']['touchdowns'] == 0 and r['link']['non_finite'] == 0", "no crash, nothing non-finite"),
+        ("r['controller']['faults'] == 0", "the Lee controller beside it (for attitude mode) saw finite inputs"),
     ]),
 }
 
