@@ -13,19 +13,6 @@ LeePositionControl::LeePositionControl(vehicle::Multirotor vehicle, LeeGains gai
   allocation_inverse_ = vehicle_.wrench_matrix().completeOrthogonalDecomposition().pseudoInverse();
 }
 
-Eigen::Matrix3d LeePositionControl::desired_attitude(const Eigen::Vector3d& force, double yaw) {
-  const Eigen::Vector3d b3 = force.normalized();
-  const Eigen::Vector3d heading(std::cos(yaw), std::sin(yaw), 0.0);
-  Eigen::Vector3d b2 = b3.cross(heading);
-  if (b2.norm() < 1e-9) b2 = b3.cross(Eigen::Vector3d::UnitX());  // thrust along the heading: any b2
-  b2.normalize();
-  Eigen::Matrix3d r;
-  r.col(0) = b2.cross(b3);
-  r.col(1) = b2;
-  r.col(2) = b3;
-  return r;
-}
-
 Eigen::Vector3d LeePositionControl::attitude_error(const Eigen::Matrix3d& desired, const Eigen::Matrix3d& actual) {
   return 0.5 * vehicle::vee(desired.transpose() * actual - actual.transpose() * desired);
 }
@@ -72,7 +59,7 @@ LeeCommand LeePositionControl::compute(const msg::TrajectorySetpoint& sp, const 
   out.force_world = force;
 
   const Eigen::Matrix3d r = state.orientation.toRotationMatrix();
-  out.attitude = desired_attitude(force, sp.yaw);
+  out.attitude = vehicle::attitude_along(force, sp.yaw);
   out.thrust_n = force.dot(r.col(2));  // what the current body z can deliver of it
 
   // Rotational law: attitude and body-rate errors, with the gyroscopic term cancelled.

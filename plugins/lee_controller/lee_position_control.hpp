@@ -46,9 +46,6 @@ class LeePositionControl {
 
   /// Lee's attitude error e_R = vee(R_d^T R - R^T R_d) / 2.
   static Eigen::Vector3d attitude_error(const Eigen::Matrix3d& desired, const Eigen::Matrix3d& actual);
-  /// The desired rotation whose z axis is along `force` and whose x axis points as close to `yaw`
-  /// as that allows.
-  static Eigen::Matrix3d desired_attitude(const Eigen::Vector3d& force, double yaw);
 
   const vehicle::Multirotor& vehicle() const { return vehicle_; }
   double hover_thrust_n() const { return vehicle_.mass_kg * gravity_; }

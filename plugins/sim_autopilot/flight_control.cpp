@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <kestrel/geometry/frames.hpp>
+#include <kestrel/vehicle/so3.hpp>
 #include <numbers>
 
 namespace kestrel::sim_autopilot {
@@ -9,25 +11,6 @@ namespace kestrel::sim_autopilot {
 namespace {
 
 constexpr double deg = std::numbers::pi / 180.0;
-
-// The attitude whose body z points along `thrust` with the heading `yaw` (PX4's bodyzToAttitude).
-Eigen::Quaterniond attitude_along(const Eigen::Vector3d& thrust, double yaw) {
-  const Eigen::Vector3d z = thrust.normalized();
-  const Eigen::Vector3d heading(std::cos(yaw), std::sin(yaw), 0.0);
-  Eigen::Vector3d y = z.cross(heading);
-  if (y.norm() < 1e-6) y = Eigen::Vector3d::UnitY();  // thrust horizontal along the heading
-  y.normalize();
-  Eigen::Matrix3d r;
-  r.col(0) = y.cross(z);
-  r.col(1) = y;
-  r.col(2) = z;
-  return Eigen::Quaterniond(r).normalized();
-}
-
-double heading_of(const Eigen::Quaterniond& q) {
-  const Eigen::Vector3d forward = q * Eigen::Vector3d::UnitX();
-  return std::atan2(forward.y(), forward.x());
-}
 
 }  // namespace
 
@@ -70,8 +53,8 @@ BodyWrench FlightControl::position(const PositionTarget& target, const vehicle::
   // Anti-windup: integrate only while the thrust can follow.
   if (!tilt_limited && !saturated) velocity_integral_ += gains_.velocity_i.cwiseProduct(error) * dt;
 
-  const double yaw = target.yaw.value_or(heading_of(s.orientation));
-  const Eigen::Quaterniond desired = attitude_along(thrust, yaw);
+  const double yaw = target.yaw.value_or(geometry::yaw_of(s.orientation));
+  const Eigen::Quaterniond desired(vehicle::attitude_along(thrust, yaw));
   BodyWrench out;
   // Thrust along the body z the vehicle has now: tilted away from the thrust vector, it pushes less.
   out.thrust_n = std::clamp(thrust.dot(s.orientation * Eigen::Vector3d::UnitZ()), 0.0, max_thrust_n_);

@@ -8,6 +8,7 @@
 // its true state for what rides on it (a simulated camera, the net). docs/field.md.
 #include <fmt/format.h>
 
+#include <kestrel/geometry/frames.hpp>
 #include <kestrel/geometry/ned_enu.hpp>
 #include <kestrel/messages/net_fire.hpp>
 #include <kestrel/messages/vehicle_state.hpp>
@@ -208,6 +209,9 @@ class SimAutopilot final : public Node {
         rules_(OffboardRulesOptions{cfg.offboard_loss_timeout_s, cfg.min_setpoint_rate_hz}),
         writer_({1, mav::comp_autopilot1}) {
     if (!init.realtime()) throw Error("sim_autopilot talks over a real link: run the graph with --executor realtime");
+    const auto rotors = static_cast<Eigen::Index>(flight_.vehicle().rotors.size());
+    stopped_ = Eigen::VectorXd::Zero(rotors);
+    idle_ = Eigen::VectorXd::Constant(rotors, cfg.idle_speed_fraction * flight_.vehicle().max_rotor_speed_rad_s);
     transport_ = mavlink::open_transport(mavlink::parse_connection_url(cfg.connection));
     init.set_rate(cfg.rate_hz);
   }
@@ -233,11 +237,10 @@ class SimAutopilot final : public Node {
 
   void take(Context& ctx, const mavlink::Frame& frame, double now) {
     if (frame.is<mavlink::Heartbeat>()) ++companion_heartbeats_;
-    const bool setpoint = frame.is<mavlink::SetPositionTargetLocalNed>() || frame.is<mavlink::SetAttitudeTarget>();
     const std::uint64_t before = rules_.counts().setpoints;
     const OffboardRules::Response r = rules_.on_frame(frame, now, flight_.on_ground());
-    if (setpoint && rules_.counts().setpoints > before) {
-      if (rules_.counts().setpoints == 1) first_setpoint_s_ = now;
+    if (rules_.counts().setpoints > before) {  // a setpoint for this vehicle: its stream's span
+      if (before == 0) first_setpoint_s_ = now;
       last_setpoint_s_ = now;
     }
     if (r.ack) send(*r.ack);
@@ -255,11 +258,8 @@ class SimAutopilot final : public Node {
   void control() {
     const vehicle::RigidBodyState& s = flight_.state();
     const double dt = 1.0 / cfg_.control_hz;
-    const Eigen::VectorXd idle =
-        Eigen::VectorXd::Constant(static_cast<Eigen::Index>(flight_.vehicle().rotors.size()),
-                                  cfg_.idle_speed_fraction * flight_.vehicle().max_rotor_speed_rad_s);
     if (!rules_.armed()) {
-      flight_.command_rotor_speeds(Eigen::VectorXd::Zero(idle.size()));
+      flight_.command_rotor_speeds(stopped_);
       control_.reset();
       hold_.reset();
       return;
@@ -272,7 +272,7 @@ class SimAutopilot final : public Node {
       else
         wrench = control_.attitude(attitude_command(std::get<mavlink::SetAttitudeTarget>(sp->target)), s, dt);
     } else if (flight_.on_ground()) {
-      flight_.command_rotor_speeds(idle);  // armed, waiting: the props spin at idle
+      flight_.command_rotor_speeds(idle_);  // armed, waiting: the props spin at idle
       control_.reset();
       return;
     } else {
@@ -280,8 +280,7 @@ class SimAutopilot final : public Node {
         hold_ = PositionTarget{};
         hold_->position = s.position;
         hold_->velocity = Eigen::Vector3d::Zero();
-        const Eigen::Vector3d forward = s.orientation * Eigen::Vector3d::UnitX();
-        hold_->yaw = std::atan2(forward.y(), forward.x());
+        hold_->yaw = geometry::yaw_of(s.orientation);
       }
       wrench = control_.position(*hold_, s, dt);
     }
@@ -352,6 +351,7 @@ class SimAutopilot final : public Node {
   std::unique_ptr<mavlink::Transport> transport_;
   std::vector<std::uint8_t> buffer_ = std::vector<std::uint8_t>(65536);
   std::optional<PositionTarget> hold_;
+  Eigen::VectorXd stopped_, idle_;  // rotor speeds disarmed, and armed on the ground
   double next_control_s_ = 0.0, next_telemetry_s_ = 0.0, next_heartbeat_s_ = 0.0;
   double first_setpoint_s_ = 0.0, last_setpoint_s_ = 0.0;
   std::uint64_t companion_heartbeats_ = 0, fire_orders_ = 0, frames_sent_ = 0, send_failures_ = 0;

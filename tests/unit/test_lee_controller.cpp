@@ -6,6 +6,7 @@
 #include <functional>
 #include <kestrel/geometry/frames.hpp>
 #include <kestrel/vehicle/multirotor_dynamics.hpp>
+#include <kestrel/vehicle/so3.hpp>
 
 #include "lee_position_control.hpp"
 
@@ -79,11 +80,11 @@ TEST(LeeController, AttitudeErrorOfHandComputedRotations) {
 
 TEST(LeeController, DesiredAttitudePointsThrustAndHeading) {
   // Straight up with yaw 90 degrees: a pure yaw rotation.
-  const Eigen::Matrix3d r = LeePositionControl::desired_attitude({0, 0, 15}, M_PI / 2);
+  const Eigen::Matrix3d r = vehicle::attitude_along({0, 0, 15}, M_PI / 2);
   EXPECT_TRUE(r.isApprox(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix(), 1e-12));
   // Force tilted forward: body z along it, body x still in the x-z plane, a rotation matrix.
   const Eigen::Vector3d f(3, 0, 10);
-  const Eigen::Matrix3d t = LeePositionControl::desired_attitude(f, 0.0);
+  const Eigen::Matrix3d t = vehicle::attitude_along(f, 0.0);
   EXPECT_TRUE(t.col(2).isApprox(f.normalized()));
   EXPECT_NEAR(t.col(0).y(), 0.0, 1e-12);
   EXPECT_TRUE((t.transpose() * t).isApprox(Eigen::Matrix3d::Identity(), 1e-12));
