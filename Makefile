@@ -4,7 +4,7 @@ JOBS      ?= $(shell nproc)
 DEMO_OUT  ?= out/demo
 GENERATOR := $(shell command -v ninja >/dev/null 2>&1 && echo "-G Ninja")
 
-.PHONY: all deps configure build test demo bench soak format package test-asan test-tsan fuzz fuzz-smoke clean
+.PHONY: all deps configure build product test demo bench soak format package test-asan test-tsan fuzz fuzz-smoke clean
 
 all: build
 
@@ -29,9 +29,14 @@ test: deps
 	$(MAKE) build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
-# Installs dependencies, builds, runs the default graph and writes $(DEMO_OUT)/report.{json,md}.
+# Only what a user runs: the CLI, the libraries and the plugins (no tests, no benchmarks).
+product: configure
+	cmake --build $(BUILD) -j $(JOBS) --target product
+
+# Installs dependencies, builds the product, runs the default graph and writes
+# $(DEMO_OUT)/report.{json,md}.
 demo: deps
-	$(MAKE) build
+	$(MAKE) product
 	scripts/demo $(DEMO_OUT)
 
 bench: build
@@ -89,7 +94,7 @@ test-asan: deps
 # under ThreadSanitizer; only the targets they need are built.
 test-tsan: deps
 	cmake -S . -B build-tsan $(SAN_CMAKE) -DKESTREL_SANITIZE=thread
-	cmake --build build-tsan -j $(JOBS) --target kestrel_framework_tests kestrel_write_queue_tests \
+	cmake --build build-tsan -j $(JOBS) --target kestrel_framework_tests kestrel_cli_tests kestrel_write_queue_tests \
 	  kestrel_live_server_tests kestrel_recorder_thread_tests kestrel_mavlink_tests kestrel_mavlink_source_tests
 	$(TSAN_ENV) ctest --test-dir build-tsan --output-on-failure -j $(JOBS) -L threads
 

@@ -28,7 +28,7 @@
 #include <opencv2/imgproc.hpp>
 #include <string>
 
-#include "camera_rig.hpp"
+#include "kestrel/camera_rig/camera_rig.hpp"
 #include "clustering.hpp"
 #include "kestrel/evaluation/body_axes.hpp"
 #include "kestrel/geometry/pinhole.hpp"

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "kestrel/runtime/graph.hpp"
+#include "kestrel/testing/plugins.hpp"
 #include "kestrel/runtime/plugin_host.hpp"
 #include "kestrel/runtime/run.hpp"
 
@@ -35,12 +36,7 @@ using namespace kestrel;
 constexpr int kMessageBytes = 1 << 20;
 
 PluginHost& plugins() {
-  static PluginHost* host = [] {
-    auto* h = new PluginHost();
-    if (!h->load(KESTREL_TEST_PLUGIN_DIR "/kestrel_test_nodes.so")) std::abort();
-    return h;
-  }();
-  return *host;
+  return kestrel::testing::test_plugins();
 }
 
 // source -> relay_1 -> ... -> relay_n -> sink

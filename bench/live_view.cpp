@@ -26,7 +26,7 @@
 #include <thread>
 
 #include "kestrel/ros2/definitions.hpp"
-#include "kestrel/ros2/message_mapping.hpp"
+#include "kestrel/ros2_messages/message_mapping.hpp"
 #include "live_server.hpp"
 
 namespace {

@@ -9,7 +9,7 @@
 
 #include "kestrel/mcap/writer.hpp"
 #include "kestrel/ros2/definitions.hpp"
-#include "kestrel/ros2/message_mapping.hpp"
+#include "kestrel/ros2_messages/message_mapping.hpp"
 #include "sensor_noise.hpp"
 #include "stereo_renderer.hpp"
 #include "trajectory.hpp"

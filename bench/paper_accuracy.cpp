@@ -10,6 +10,7 @@
 #include <string>
 
 #include "kestrel/runtime/graph.hpp"
+#include "kestrel/testing/plugins.hpp"
 #include "kestrel/runtime/plugin_host.hpp"
 #include "kestrel/runtime/run.hpp"
 
@@ -18,12 +19,7 @@ namespace {
 using namespace kestrel;
 
 PluginHost& plugins() {
-  static PluginHost* host = [] {
-    auto* h = new PluginHost();
-    h->load_search_path();
-    return h;
-  }();
-  return *host;
+  return kestrel::testing::built_plugins();
 }
 
 RunResult run(benchmark::State& state, const std::string& graph) {

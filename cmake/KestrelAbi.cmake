@@ -4,7 +4,7 @@
 # every plugin-facing header below INCLUDE_DIRS (abi_hash.py), which KESTREL_ABI_TAG carries. A
 # comment or whitespace edit keeps the hash; a declaration change moves it.
 #
-# kestrel's own build calls the function at configure time (framework/CMakeLists.txt). Run as a
+# kestrel's own build calls the function at configure time (runtime/CMakeLists.txt). Run as a
 # script, it does the same for any include tree, for instance an installed one:
 #   cmake -DOUTPUT=inc/kestrel/version.hpp -DVERSION=0.1.0 -DINCLUDE_DIRS=inc -P KestrelAbi.cmake
 set(_KESTREL_ABI_DIR "${CMAKE_CURRENT_LIST_DIR}")
@@ -37,7 +37,7 @@ function(kestrel_write_version_header)
   set(PROJECT_VERSION_PATCH "${CMAKE_MATCH_3}")
   kestrel_abi_version(KESTREL_ABI_VERSION "${ARG_VERSION}")
   if(NOT ARG_TEMPLATE)
-    set(ARG_TEMPLATE "${_KESTREL_ABI_DIR}/../framework/include/kestrel/version.hpp.in")
+    set(ARG_TEMPLATE "${_KESTREL_ABI_DIR}/../runtime/include/kestrel/version.hpp.in")
   endif()
 
   if(Python3_EXECUTABLE)

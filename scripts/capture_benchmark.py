@@ -57,15 +57,15 @@ def scenario(seed):
         dx, dy = math.sin(heading) * length / 2.0, math.cos(heading) * length / 2.0
         s.update({"intruder.line_start_m": vec([distance - dx, lateral - dy, height - climb / 2.0]),
                   "intruder.line_end_m": vec([distance + dx, lateral + dy, height + climb / 2.0]),
-                  "intruder.speed_mps": f"{rng.uniform(0.5, MAX_INTRUDER_SPEED):.3f}", "intruder.at_end": "repeat",
+                  "intruder.speed_m_s": f"{rng.uniform(0.5, MAX_INTRUDER_SPEED):.3f}", "intruder.at_end": "repeat",
                   # It brakes and turns as a multirotor can: 2 to 6 m/s^2 (a small quadrotor's
                   # few m/s^2 up to a sporty one's).
-                  "intruder.line_acceleration_mps2": f"{rng.uniform(2.0, 6.0):.3f}"})
+                  "intruder.line_acceleration_m_s2": f"{rng.uniform(2.0, 6.0):.3f}"})
     else:
         s.update({"intruder.random_centre_m": vec([distance, lateral, height]),
                   "intruder.random_half_extent_m": vec([rng.uniform(0.3, 1.0), rng.uniform(0.5, 2.0),
                                                         rng.uniform(0.2, 0.6)]),
-                  "intruder.max_speed_mps": f"{rng.uniform(0.5, MAX_INTRUDER_SPEED):.3f}"})
+                  "intruder.max_speed_m_s": f"{rng.uniform(0.5, MAX_INTRUDER_SPEED):.3f}"})
     return s
 
 

@@ -9,7 +9,7 @@
 #include <kestrel/geometry/frames.hpp>
 #include <optional>
 
-#include "net_model.hpp"
+#include "kestrel/net/net_model.hpp"
 
 namespace kestrel::aim {
 

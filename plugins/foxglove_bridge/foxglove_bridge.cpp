@@ -6,7 +6,7 @@
 
 #include <kestrel/plugin.hpp>
 #include <kestrel/ros2/definitions.hpp>
-#include <kestrel/ros2/message_mapping.hpp>
+#include "kestrel/ros2_messages/message_mapping.hpp"
 #include <kestrel/version.hpp>
 #include <map>
 #include <optional>

@@ -23,12 +23,12 @@ struct IntruderConfig {
   double period_s = 12.0;
   Eigen::Vector3d line_start_m{5.0, 3.0, 2.0};
   Eigen::Vector3d line_end_m{5.0, -3.0, 2.0};
-  double speed_mps = 1.0;
-  double line_acceleration_mps2 = 0.0;
+  double speed_m_s = 1.0;
+  double line_acceleration_m_s2 = 0.0;
   Eigen::Vector3d random_centre_m{5.0, 0.0, 2.0};
   Eigen::Vector3d random_half_extent_m{1.0, 1.5, 0.75};
-  double max_speed_mps = 3.0;
-  double max_acceleration_mps2 = 0.0;
+  double max_speed_m_s = 3.0;
+  double max_acceleration_m_s2 = 0.0;
   double random_max_frequency_hz = 0.25;
   std::string file;
   AtEnd at_end = AtEnd::repeat;
@@ -67,8 +67,8 @@ class IntruderNode final : public Node {
     c.param("period_s", &C::period_s).with_unit("s").range(0.5, 3600.0).describe("figure8: time for one loop");
     c.param("line_start_m", &C::line_start_m).with_unit("m").describe("line: start (world)");
     c.param("line_end_m", &C::line_end_m).with_unit("m").describe("line: end (world)");
-    c.param("speed_mps", &C::speed_mps).with_unit("m/s").range(0.0, 100.0).describe("line: speed");
-    c.param("line_acceleration_mps2", &C::line_acceleration_mps2)
+    c.param("speed_m_s", &C::speed_m_s).renamed_from("speed_mps").with_unit("m/s").range(0.0, 100.0).describe("line: speed");
+    c.param("line_acceleration_m_s2", &C::line_acceleration_m_s2).renamed_from("line_acceleration_mps2")
         .with_unit("m/s^2")
         .range(0.0, 1000.0)
         .describe(
@@ -81,8 +81,8 @@ class IntruderNode final : public Node {
         .with_unit("m")
         .range(0.0, 100.0)
         .describe("random: half size of that box");
-    c.param("max_speed_mps", &C::max_speed_mps).with_unit("m/s").range(0.0, 100.0).describe("random: speed limit");
-    c.param("max_acceleration_mps2", &C::max_acceleration_mps2)
+    c.param("max_speed_m_s", &C::max_speed_m_s).renamed_from("max_speed_mps").with_unit("m/s").range(0.0, 100.0).describe("random: speed limit");
+    c.param("max_acceleration_m_s2", &C::max_acceleration_m_s2).renamed_from("max_acceleration_mps2")
         .with_unit("m/s^2")
         .range(0.0, 1000.0)
         .describe("random: acceleration limit; 0: only the box and the speed bound it");
@@ -151,13 +151,13 @@ class IntruderNode final : public Node {
             std::make_unique<FigureEight>(camera_, cfg.distance_m, cfg.half_width_m, cfg.half_height_m, cfg.period_s);
         break;
       case Shape::line:
-        trajectory_ = std::make_unique<StraightLine>(cfg.line_start_m, cfg.line_end_m, cfg.speed_mps, repeat,
-                                                     cfg.line_acceleration_mps2);
+        trajectory_ = std::make_unique<StraightLine>(cfg.line_start_m, cfg.line_end_m, cfg.speed_m_s, repeat,
+                                                     cfg.line_acceleration_m_s2);
         break;
       case Shape::random:
         trajectory_ =
-            std::make_unique<RandomManoeuvre>(cfg.random_centre_m, cfg.random_half_extent_m, cfg.max_speed_mps,
-                                              init.seed(), cfg.max_acceleration_mps2, cfg.random_max_frequency_hz);
+            std::make_unique<RandomManoeuvre>(cfg.random_centre_m, cfg.random_half_extent_m, cfg.max_speed_m_s,
+                                              init.seed(), cfg.max_acceleration_m_s2, cfg.random_max_frequency_hz);
         break;
       case Shape::file:
         trajectory_ = std::make_unique<RecordedFlight>(cfg.file, repeat);

@@ -8,9 +8,7 @@ namespace kestrel::control {
 
 LeePositionControl::LeePositionControl(vehicle::Multirotor vehicle, LeeGains gains, double gravity, double max_tilt_rad)
     : vehicle_(std::move(vehicle)), gains_(std::move(gains)), gravity_(gravity), max_tilt_rad_(max_tilt_rad) {
-  // Minimum-norm squared speeds for a wrench: the right pseudo-inverse of the allocation, computed
-  // once from the rotor configuration.
-  allocation_inverse_ = vehicle_.wrench_matrix().completeOrthogonalDecomposition().pseudoInverse();
+  allocation_inverse_ = vehicle_.allocation_inverse();
 }
 
 Eigen::Vector3d LeePositionControl::attitude_error(const Eigen::Matrix3d& desired, const Eigen::Matrix3d& actual) {

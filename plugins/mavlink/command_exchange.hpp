@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <optional>
 
-#include "messages.hpp"
+#include "kestrel/mavlink/messages.hpp"
 
 namespace kestrel::mavlink {
 

@@ -13,10 +13,10 @@
 #include <thread>
 #include <vector>
 
-#include "frame.hpp"
-#include "frame_parser.hpp"
-#include "messages.hpp"
-#include "transport.hpp"
+#include "kestrel/mavlink/frame.hpp"
+#include "kestrel/mavlink/frame_parser.hpp"
+#include "kestrel/mavlink/messages.hpp"
+#include "kestrel/mavlink/transport.hpp"
 
 namespace kestrel::mavlink {
 

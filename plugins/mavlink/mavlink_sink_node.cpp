@@ -16,8 +16,8 @@
 #include <kestrel/plugin.hpp>
 #include <numbers>
 
-#include "autopilot_status.hpp"
-#include "connection_param.hpp"
+#include "link_status.hpp"
+#include "kestrel/mavlink/connection_param.hpp"
 #include "link.hpp"
 #include "offboard_session.hpp"
 #include "setpoint_guard.hpp"
@@ -34,13 +34,15 @@ constexpr std::uint16_t kPositionVelocityAccelerationYaw = 2048;
 }  // namespace
 
 struct MavlinkSinkConfig {
+  enum class Command { position, attitude };
+  enum class FireCommand { servo, relay };
   std::string connection = "udpin://0.0.0.0:14540";
-  std::string command = "position";
+  Command command = Command::position;
   double rate_hz = 50.0;
   double prestream_s = 1.0;
   bool arm = false;
   bool net_armed = false;
-  std::string fire_command = "servo";
+  FireCommand fire_command = FireCommand::servo;
   std::int64_t fire_channel = 9;
   double fire_value = 1900.0;
   double hover_thrust = 0.5;
@@ -51,7 +53,7 @@ struct MavlinkSinkConfig {
   std::int64_t retries = 3;
   Eigen::Vector3d fence_min_m{-50.0, -50.0, 0.5};
   Eigen::Vector3d fence_max_m{50.0, 50.0, 30.0};
-  double max_speed_mps = 8.0;
+  double max_speed_m_s = 8.0;
   double max_tilt_deg = 35.0;
 };
 
@@ -66,8 +68,7 @@ class MavlinkSink final : public Node {
     ConfigSpec<C> c;
     declare_connection(c, &C::connection,
                        "the link: udpin://HOST:PORT, udpout://HOST:PORT or serial:///dev/PORT:BAUD (MAVSDK's forms)");
-    c.param("command", &C::command)
-        .one_of({"position", "attitude"})
+    c.choice("command", &C::command, {{"position", C::Command::position}, {"attitude", C::Command::attitude}})
         .describe("what is flown: the setpoint input as position targets, or the attitude input");
     c.param("rate_hz", &C::rate_hz)
         .with_unit("Hz")
@@ -79,8 +80,7 @@ class MavlinkSink final : public Node {
         .describe("setpoints streamed before the mode is asked for");
     c.param("arm", &C::arm).describe("arm the vehicle (COMPONENT_ARM_DISARM) after the pre-stream");
     c.param("net_armed", &C::net_armed).describe("let a fire order through to the launcher");
-    c.param("fire_command", &C::fire_command)
-        .one_of({"servo", "relay"})
+    c.choice("fire_command", &C::fire_command, {{"servo", C::FireCommand::servo}, {"relay", C::FireCommand::relay}})
         .describe("how the launcher is triggered: MAV_CMD_DO_SET_SERVO or MAV_CMD_DO_SET_RELAY");
     c.param("fire_channel", &C::fire_channel).range(0, 64).describe("servo output or relay number of the launcher");
     c.param("fire_value", &C::fire_value)
@@ -105,7 +105,7 @@ class MavlinkSink final : public Node {
     c.param("retries", &C::retries).range(0, 20).describe("re-sends of a command that had no answer");
     c.param("fence_min_m", &C::fence_min_m).with_unit("m").describe("geofence box, lower corner (world ENU)");
     c.param("fence_max_m", &C::fence_max_m).with_unit("m").describe("geofence box, upper corner (world ENU)");
-    c.param("max_speed_mps", &C::max_speed_mps).with_unit("m/s").range(0.1, 50.0).describe("speed limit");
+    c.param("max_speed_m_s", &C::max_speed_m_s).renamed_from("max_speed_mps").with_unit("m/s").range(0.1, 50.0).describe("speed limit");
     c.param("max_tilt_deg", &C::max_tilt_deg).with_unit("deg").range(5.0, 80.0).describe("tilt limit");
     c.rule("fence_min_m < fence_max_m", {"fence_min_m", "fence_max_m"},
            [](const C& config) { return (config.fence_min_m.array() < config.fence_max_m.array()).all(); });
@@ -117,6 +117,7 @@ class MavlinkSink final : public Node {
             "fence, speeds and tilts to their limits; stale commands become a hold at the vehicle's position; a lost "
             "heartbeat stops the commanding until the autopilot returns, through the pre-stream again. A fire order "
             "goes out only when armed, in the mode and net_armed. Every refusal and failsafe is counted in the report.")
+        .needs_executor(ExecutorNeed::realtime, "it talks to a real link")
         .input(kSetpoint, "the planner's setpoints (world ENU)", {.trigger = Trigger::latest, .optional = true})
         .input(kAttitude, "the controller's attitude and thrust", {.trigger = Trigger::latest, .optional = true})
         .input(kFire, "fire orders", {.trigger = Trigger::on_message, .optional = true})
@@ -125,9 +126,8 @@ class MavlinkSink final : public Node {
 
   explicit MavlinkSink(NodeInit& init)
       : cfg_(init.config<MavlinkSinkConfig>()),
-        guard_(GuardLimits{cfg_.fence_min_m, cfg_.fence_max_m, cfg_.max_speed_mps, cfg_.max_tilt_deg}),
+        guard_(GuardLimits{cfg_.fence_min_m, cfg_.fence_max_m, cfg_.max_speed_m_s, cfg_.max_tilt_deg}),
         session_(SessionOptions{cfg_.prestream_s, cfg_.arm, cfg_.ack_timeout_s, static_cast<int>(cfg_.retries)}) {
-    if (!init.realtime()) throw Error("mavlink_sink talks to a real link: run the graph with --executor realtime");
     link_ = Link::open(cfg_.connection);
     init.set_rate(cfg_.rate_hz);
   }
@@ -176,12 +176,13 @@ class MavlinkSink final : public Node {
     CommandLong c;
     c.target_system = autopilot.system_id;
     c.target_component = autopilot.component_id;
-    c.command = cfg_.fire_command == "relay" ? mav::cmd_do_set_relay : mav::cmd_do_set_servo;
+    const bool relay = cfg_.fire_command == MavlinkSinkConfig::FireCommand::relay;
+    c.command = relay ? mav::cmd_do_set_relay : mav::cmd_do_set_servo;
     c.param1 = static_cast<float>(cfg_.fire_channel);
     c.param2 = static_cast<float>(cfg_.fire_value);
     link_->send(c);
     ++fired_;
-    ctx.log().info("fire: {} {} = {}", cfg_.fire_command, cfg_.fire_channel, cfg_.fire_value);
+    ctx.log().info("fire: {} {} = {}", relay ? "relay" : "servo", cfg_.fire_channel, cfg_.fire_value);
   }
 
   void finish(Context& ctx) override {
@@ -255,7 +256,7 @@ class MavlinkSink final : public Node {
 
   void stream(Context& ctx, const VehicleView& view) {
     const std::uint8_t target_system = view.system_id, target_component = view.component_id;
-    if (cfg_.command == "attitude") {
+    if (cfg_.command == MavlinkSinkConfig::Command::attitude) {
       if (const auto a = fresh(ctx, kAttitude)) {
         if (const auto safe = guard_.attitude(*a)) {
           SetAttitudeTarget t;

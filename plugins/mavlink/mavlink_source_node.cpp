@@ -6,8 +6,8 @@
 
 #include <kestrel/plugin.hpp>
 
-#include "autopilot_status.hpp"
-#include "connection_param.hpp"
+#include "link_status.hpp"
+#include "kestrel/mavlink/connection_param.hpp"
 #include "link.hpp"
 #include "vehicle_state_conversion.hpp"
 
@@ -15,7 +15,8 @@ namespace kestrel::mavlink {
 
 struct MavlinkSourceConfig {
   std::string connection = "udpin://0.0.0.0:14540";
-  std::string state_from = "auto";
+  enum class StateFrom { automatic, local_position, odometry };
+  StateFrom state_from = StateFrom::automatic;
   double rate_hz = 100.0;
   double status_rate_hz = 5.0;
   double heartbeat_timeout_s = 1.5;
@@ -31,8 +32,10 @@ class MavlinkSource final : public Node {
     ConfigSpec<C> c;
     declare_connection(c, &C::connection,
                        "the link: udpin://HOST:PORT, udpout://HOST:PORT or serial:///dev/PORT:BAUD (MAVSDK's forms)");
-    c.param("state_from", &C::state_from)
-        .one_of({"auto", "local_position", "odometry"})
+    c.choice("state_from", &C::state_from,
+             {{"auto", C::StateFrom::automatic},
+              {"local_position", C::StateFrom::local_position},
+              {"odometry", C::StateFrom::odometry}})
         .describe(
             "LOCAL_POSITION_NED with ATTITUDE_QUATERNION, or ODOMETRY; auto takes ODOMETRY once it arrives, the pair "
             "until then");
@@ -49,14 +52,14 @@ class MavlinkSource final : public Node {
         .details(
             "Publishes a VehicleState for each new position or odometry message, converted from NED/FRD to kestrel's "
             "ENU/FLU, and the autopilot's status (armed, flight mode, link health). Reports frames, refusals and link "
-            "losses. A real link: run the graph with the realtime executor.")
+            "losses.")
+        .needs_executor(ExecutorNeed::realtime, "it talks to a real link")
         .output(kState, "the vehicle's state (world ENU, body FLU)")
         .output(kStatus, "the autopilot's armed state, mode and link health")
         .config(std::move(c));
   }
 
   explicit MavlinkSource(NodeInit& init) : cfg_(init.config<MavlinkSourceConfig>()) {
-    if (!init.realtime()) throw Error("mavlink_source talks to a real link: run the graph with --executor realtime");
     link_ = Link::open(cfg_.connection);
     init.set_rate(cfg_.rate_hz);
   }
@@ -104,7 +107,9 @@ class MavlinkSource final : public Node {
 
  private:
   void publish_state(Context& ctx, const VehicleView& view) {
-    const bool use_odometry = cfg_.state_from == "odometry" || (cfg_.state_from == "auto" && view.odometry_count > 0);
+    using From = MavlinkSourceConfig::StateFrom;
+    const bool use_odometry =
+        cfg_.state_from == From::odometry || (cfg_.state_from == From::automatic && view.odometry_count > 0);
     std::optional<msg::VehicleState> state;
     if (use_odometry) {
       if (view.odometry_count != last_view_.odometry_count) state = vehicle_state(view.odometry);

@@ -9,7 +9,7 @@
 #include <optional>
 #include <string>
 
-#include "autopilot_modes.hpp"
+#include "kestrel/mavlink/autopilot_modes.hpp"
 #include "command_exchange.hpp"
 
 namespace kestrel::mavlink {

@@ -20,8 +20,8 @@ std::optional<msg::TrajectorySetpoint> SetpointGuard::position(const msg::Trajec
   out.position = in.position.cwiseMax(limits_.fence_min).cwiseMin(limits_.fence_max);
   if (out.position != in.position) ++counts_.fence_clamps;
   const double speed = in.velocity.norm();
-  if (speed > limits_.max_speed_mps) {
-    out.velocity *= limits_.max_speed_mps / speed;
+  if (speed > limits_.max_speed_m_s) {
+    out.velocity *= limits_.max_speed_m_s / speed;
     ++counts_.speed_clamps;
   }
   // Tilt: a horizontal acceleration a needs a tilt of atan(a / g) to hold the height.

@@ -14,7 +14,7 @@ namespace kestrel::mavlink {
 struct GuardLimits {
   Eigen::Vector3d fence_min{-50.0, -50.0, 0.5};  ///< ENU, m
   Eigen::Vector3d fence_max{50.0, 50.0, 30.0};
-  double max_speed_mps = 8.0;
+  double max_speed_m_s = 8.0;
   double max_tilt_deg = 35.0;
 };
 

@@ -4,7 +4,7 @@
 #include <kestrel/messages/vehicle_state.hpp>
 #include <optional>
 
-#include "messages.hpp"
+#include "kestrel/mavlink/messages.hpp"
 
 namespace kestrel::mavlink {
 

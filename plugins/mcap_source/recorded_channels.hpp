@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <functional>
 #include <kestrel/mcap/reader.hpp>
-#include <kestrel/ros2/message_mapping.hpp>
+#include "kestrel/ros2_messages/message_mapping.hpp"
 #include <map>
 #include <memory>
 #include <string>

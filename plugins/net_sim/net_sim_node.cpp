@@ -17,7 +17,7 @@
 #include <limits>
 #include <optional>
 
-#include "net_model.hpp"
+#include "kestrel/net/net_model.hpp"
 
 namespace kestrel::net {
 

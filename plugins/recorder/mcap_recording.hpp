@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <kestrel/mcap/writer.hpp>
 #include <kestrel/message.hpp>
-#include <kestrel/ros2/message_mapping.hpp>
+#include "kestrel/ros2_messages/message_mapping.hpp"
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>

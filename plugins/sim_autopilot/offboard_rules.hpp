@@ -16,8 +16,8 @@
 #include <variant>
 #include <vector>
 
-#include "frame.hpp"
-#include "messages.hpp"
+#include "kestrel/mavlink/frame.hpp"
+#include "kestrel/mavlink/messages.hpp"
 
 namespace kestrel::sim_autopilot {
 

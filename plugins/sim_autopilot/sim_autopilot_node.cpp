@@ -17,12 +17,12 @@
 #include <kestrel/vehicle/simulated_multirotor.hpp>
 #include <memory>
 
-#include "connection_param.hpp"
-#include "connection_url.hpp"
+#include "kestrel/mavlink/connection_param.hpp"
+#include "kestrel/mavlink/connection_url.hpp"
 #include "flight_control.hpp"
-#include "frame_parser.hpp"
+#include "kestrel/mavlink/frame_parser.hpp"
 #include "offboard_rules.hpp"
-#include "transport.hpp"
+#include "kestrel/mavlink/transport.hpp"
 
 namespace kestrel::sim_autopilot {
 
@@ -36,7 +36,8 @@ struct SimAutopilotConfig {
   double offboard_loss_timeout_s = 0.5;
   double min_setpoint_rate_hz = 2.0;
   double idle_speed_fraction = 0.1;
-  std::string launcher = "servo";
+  enum class Launcher { servo, relay };
+  Launcher launcher = Launcher::servo;
   std::int64_t launcher_channel = 9;
   double launcher_threshold = 1500.0;
   vehicle::SimulationConfig sim;
@@ -72,8 +73,7 @@ class SimAutopilot final : public Node {
     c.param("idle_speed_fraction", &C::idle_speed_fraction)
         .range(0.0, 0.5)
         .describe("armed on the ground outside offboard: rotors at this fraction of their top speed");
-    c.param("launcher", &C::launcher)
-        .one_of({"servo", "relay"})
+    c.choice("launcher", &C::launcher, {{"servo", C::Launcher::servo}, {"relay", C::Launcher::relay}})
         .describe("the output the net launcher hangs on: DO_SET_SERVO or DO_SET_RELAY");
     c.param("launcher_channel", &C::launcher_channel).range(0, 64).describe("its servo output or relay number");
     c.param("launcher_threshold", &C::launcher_threshold)
@@ -127,8 +127,8 @@ class SimAutopilot final : public Node {
             "SET_ATTITUDE_TARGET, thrust 0..1 of the rotors' top thrust). It follows PX4's offboard rules: offboard "
             "only with a setpoint stream, hold when the stream stops for offboard_loss_timeout_s, no disarming in the "
             "air. Sends HEARTBEAT (1 Hz), LOCAL_POSITION_NED and ATTITUDE_QUATERNION (telemetry_hz), "
-            "EXTENDED_SYS_STATE, STATUSTEXT and COMMAND_ACK. The launcher's servo or relay output publishes `fire`. "
-            "Needs the realtime executor.")
+            "EXTENDED_SYS_STATE, STATUSTEXT and COMMAND_ACK. The launcher's servo or relay output publishes `fire`.")
+        .needs_executor(ExecutorNeed::realtime, "it talks over a real link")
         .output(kState, "true state at rate_hz (for a camera or net riding on the vehicle)")
         .output(kFire, "a fire order when the launcher's output is set")
         .config(std::move(c));
@@ -208,7 +208,6 @@ class SimAutopilot final : public Node {
         control_(flight_.vehicle(), cfg.gains, cfg.sim.gravity_m_s2, flight_.max_thrust_n()),
         rules_(OffboardRulesOptions{cfg.offboard_loss_timeout_s, cfg.min_setpoint_rate_hz}),
         writer_({1, mav::comp_autopilot1}) {
-    if (!init.realtime()) throw Error("sim_autopilot talks over a real link: run the graph with --executor realtime");
     const auto rotors = static_cast<Eigen::Index>(flight_.vehicle().rotors.size());
     stopped_ = Eigen::VectorXd::Zero(rotors);
     idle_ = Eigen::VectorXd::Constant(rotors, cfg.idle_speed_fraction * flight_.vehicle().max_rotor_speed_rad_s);
@@ -244,7 +243,7 @@ class SimAutopilot final : public Node {
       last_setpoint_s_ = now;
     }
     if (r.ack) send(*r.ack);
-    if (r.output && r.output->relay == (cfg_.launcher == "relay") && r.output->channel == cfg_.launcher_channel &&
+    if (r.output && r.output->relay == (cfg_.launcher == SimAutopilotConfig::Launcher::relay) && r.output->channel == cfg_.launcher_channel &&
         r.output->value >= cfg_.launcher_threshold) {
       ++fire_orders_;
       ctx.log().info("t = {:.2f} s: launcher output {} set to {:g}: fire", now, r.output->channel, r.output->value);

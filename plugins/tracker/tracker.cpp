@@ -4,7 +4,7 @@
 //   - id: tracker
 //     type: tracker
 //     params:
-//       filter: {type: kalman, r: 1.0}             # or particle (plugins/particle_tracker)
+//       filter: {type: kalman, r: 1.0}             # or particle (plugins/particle_filter)
 //       associator: {type: hungarian, gate_m: 1.0}  # or greedy (plugins/associators)
 //       initiator: {type: consecutive_hits, confirm_hits: 1}
 //       deleter: {type: consecutive_misses, max_misses: 10}

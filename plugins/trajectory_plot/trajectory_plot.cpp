@@ -16,7 +16,6 @@ namespace kestrel::trajectory_plot {
 
 struct TrajectoryPlotConfig {
   std::string name = "trajectory";
-  std::string output_dir;  // no longer used: files go to the report folder
   std::int64_t max_samples = 200000;
   double from_s = 0.0;
   double to_s = 0.0;
@@ -32,8 +31,6 @@ class TrajectoryPlot final : public Node {
     using C = TrajectoryPlotConfig;
     ConfigSpec<C> c;
     c.param("name", &C::name).describe("file names in the report folder: NAME.png and NAME.csv");
-    c.param("output_dir", &C::output_dir)
-        .describe("deprecated and ignored: the files go to the report folder (kestrel run --report DIR)");
     c.param("max_samples", &C::max_samples)
         .at_least(1)
         .describe("samples kept per series (memory bound); later ones are counted in the report, not kept");
@@ -55,11 +52,7 @@ class TrajectoryPlot final : public Node {
         .config(std::move(c));
   }
 
-  explicit TrajectoryPlot(NodeInit& init) : cfg_(init.config<TrajectoryPlotConfig>()) {
-    if (!cfg_.output_dir.empty())
-      init.log().warn("output_dir is no longer used: {}.png and {}.csv go to the report folder (--report DIR)",
-                      cfg_.name, cfg_.name);
-  }
+  explicit TrajectoryPlot(NodeInit& init) : cfg_(init.config<TrajectoryPlotConfig>()) {}
 
   void process(Context& ctx) override {
     if (ctx.triggered_by(kTruth)) {

@@ -11,7 +11,7 @@
 #include <kestrel/messages/vehicle_state.hpp>
 #include <kestrel/plugin.hpp>
 
-#include "camera_rig.hpp"
+#include "kestrel/camera_rig/camera_rig.hpp"
 #include "stereo_detection_model.hpp"
 
 namespace kestrel::sensors {

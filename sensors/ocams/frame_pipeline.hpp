@@ -8,7 +8,7 @@
 #include <span>
 
 #include "raw_frame.hpp"
-#include "stereo_rectifier.hpp"
+#include "kestrel/stereo_calibration/stereo_rectifier.hpp"
 
 namespace kestrel::ocams {
 

@@ -96,7 +96,7 @@ ImuSample ocams_sample(const std::vector<std::string_view>& f, std::string_view 
   ImuSample s;
   s.format = std::string(format);
   s.device_ms = parse_number<std::uint32_t>(f[1], format, 1);
-  s.acceleration_mps2 = v.raw3(2, kAccelerationScale);
+  s.acceleration_m_s2 = v.raw3(2, kAccelerationScale);
   s.gravity_removed = format.starts_with("LMG");
   s.magnetic_field_t = v.raw3(5, kFieldScale) * 1e-6;
   s.angular_rate_radps = v.raw3(8, kRateScale);
@@ -117,7 +117,7 @@ ImuSample quatimu_sample(const std::vector<std::string_view>& f) {
   if (seq > 255) throw ImuLineError("QUATIMU sequence " + std::to_string(seq) + " is over 255");
   s.sequence = seq;
   s.orientation = unit_quaternion(v.number(5), v.number(2), v.number(3), v.number(4), "QUATIMU");
-  s.acceleration_mps2 = v.number3(6, kGravity);
+  s.acceleration_m_s2 = v.number3(6, kGravity);
   s.angular_rate_radps = v.number3(9, kDegToRad);
   s.magnetic_field_t = v.number3(12, 1e-6);
   v.number(15);  // temperature: checked, not kept

@@ -24,7 +24,7 @@ struct ImuSample {
   std::string format;                      ///< "AMGQUA", "QUATIMU", ...
   std::optional<std::uint32_t> device_ms;  ///< the device's clock, where the line carries it
   std::optional<std::uint32_t> sequence;   ///< myAHRS+ lines' counter (0..255)
-  Eigen::Vector3d acceleration_mps2 = Eigen::Vector3d::Zero();
+  Eigen::Vector3d acceleration_m_s2 = Eigen::Vector3d::Zero();
   bool gravity_removed = false;  ///< LMG lines: linear acceleration
   Eigen::Vector3d angular_rate_radps = Eigen::Vector3d::Zero();
   Eigen::Vector3d magnetic_field_t = Eigen::Vector3d::Zero();

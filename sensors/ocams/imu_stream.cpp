@@ -18,7 +18,7 @@ ImuStream::ImuStream(ImuStreamOptions options, std::function<Time()> now)
 }
 
 void ImuStream::open() {
-  auto port = std::make_unique<SerialPort>(options_.port, options_.baud);
+  auto port = std::make_unique<ImuPort>(options_.port, options_.baud);
   if (is_ocams_format(options_.format)) {
     port->write(ocams_format_command(options_.format));
   } else {  // a myAHRS+ board: ASCII, continuous, then the format
@@ -88,7 +88,7 @@ std::vector<msg::Imu> ImuStream::read(std::chrono::milliseconds wait) {
         m.stamp = s.device_ms ? clock_.map(*s.device_ms, arrival) : arrival;
         m.frame = options_.frame;
         m.angular_velocity = s.angular_rate_radps;
-        m.linear_acceleration = s.acceleration_mps2;
+        m.linear_acceleration = s.acceleration_m_s2;
         m.gravity_removed = s.gravity_removed;
         m.orientation = s.orientation;
         m.magnetic_field = s.magnetic_field_t;

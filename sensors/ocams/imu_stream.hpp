@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "device_clock.hpp"
-#include "serial_port.hpp"
+#include "imu_port.hpp"
 
 namespace kestrel::ocams {
 
@@ -54,7 +54,7 @@ class ImuStream {
 
   ImuStreamOptions options_;
   std::function<Time()> now_;
-  std::unique_ptr<SerialPort> port_;
+  std::unique_ptr<ImuPort> port_;
   DeviceClock clock_;
   ImuCounters counters_;
   std::chrono::steady_clock::time_point last_line_, last_try_;

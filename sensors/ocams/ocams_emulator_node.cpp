@@ -8,7 +8,7 @@
 #include <kestrel/plugin.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "camera_info.hpp"
+#include "kestrel/stereo_calibration/camera_info.hpp"
 #include "frame_pipeline.hpp"
 #include "raw_recording.hpp"
 

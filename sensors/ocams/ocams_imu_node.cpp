@@ -47,14 +47,13 @@ class OcamsImuNode final : public Node {
         .details(
             "Opens the port (termios, raw 8N1), asks for the format and parses each line: the oCamS's BNO055 integers "
             "scaled to SI units, or a myAHRS+ board's checksummed lines. Publishes orientation, angular rate, "
-            "acceleration and magnetic field with the device's clock mapped onto the run's. Needs the realtime "
-            "executor.")
+            "acceleration and magnetic field with the device's clock mapped onto the run's.")
+        .needs_executor(ExecutorNeed::realtime, "it reads a real device")
         .output(kImu, "inertial measurements")
         .config(std::move(c));
   }
 
   explicit OcamsImuNode(NodeInit& init) : cfg_(init.config<OcamsImuConfig>()) {
-    if (!init.realtime()) throw Error("ocams_imu is a real device: run the graph with --executor realtime");
     ImuStreamOptions o;
     o.port = cfg_.port;
     o.baud = static_cast<int>(cfg_.baud);

@@ -5,8 +5,8 @@
 
 #include <kestrel/plugin.hpp>
 
-#include "camera_info.hpp"
-#include "camera_rig.hpp"
+#include "kestrel/stereo_calibration/camera_info.hpp"
+#include "kestrel/camera_rig/camera_rig.hpp"
 #include "frame_pipeline.hpp"
 #include "raw_recording.hpp"
 

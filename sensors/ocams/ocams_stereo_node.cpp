@@ -8,10 +8,10 @@
 #include <kestrel/plugin.hpp>
 #include <sstream>
 
-#include "camera_info.hpp"
-#include "camera_rig.hpp"
+#include "kestrel/stereo_calibration/camera_info.hpp"
+#include "kestrel/camera_rig/camera_rig.hpp"
 #include "frame_pipeline.hpp"
-#include "ocams_modes.hpp"
+#include "kestrel/v4l2/ocams_modes.hpp"
 #include "ocams_stream.hpp"
 #include "raw_recording.hpp"
 
@@ -100,9 +100,9 @@ class OcamsStereoNode final : public Node {
     return NodeSpec("ocams_stereo", "WithRobot oCamS-1CGN-U stereo camera (V4L2), rectified from camera_info files")
         .details(
             "Streams the camera's Bayer GRBG pairs, splits, demosaics and rectifies them and publishes the same "
-            "StereoFrame as sim_stereo, stamped with the camera's clock mapped onto the run's. Needs the realtime "
-            "executor. A missing camera stops the run at start with 'no oCamS found'; a stalled or unplugged one is "
+            "StereoFrame as sim_stereo, stamped with the camera's clock mapped onto the run's. A missing camera stops the run at start with 'no oCamS found'; a stalled or unplugged one is "
             "reopened when it returns (reconnect). The report counts frames, lost frames and reconnects.")
+        .needs_executor(ExecutorNeed::realtime, "it reads a real camera (ocams_replay replays one in lockstep)")
         .output(kFrame, "rectified stereo frames")
         .config(std::move(c));
   }
@@ -147,10 +147,6 @@ class OcamsStereoNode final : public Node {
       : cfg_(cfg),
         wait_(std::chrono::milliseconds(static_cast<int>(1500 / cfg.fps))),
         mount_(sensors::mount_on_vehicle(cfg.mount_frame, cfg.mount_position_m, cfg.mount_rpy_deg)) {
-    if (!init.realtime())
-      throw Error(
-          "ocams_stereo is a real camera: run the graph with --executor realtime (ocams_replay replays one "
-          "in lockstep)");
     StreamOptions o;
     o.device = cfg.device;
     o.format = {static_cast<int>(cfg.width), static_cast<int>(cfg.height), static_cast<int>(cfg.fps)};
@@ -160,8 +156,8 @@ class OcamsStereoNode final : public Node {
     o.stall_timeout = std::chrono::milliseconds(static_cast<int>(cfg.stall_timeout_s * 1000));
     o.reconnect = cfg.reconnect;
     // The camera first: without one, that is what the user must hear, not a calibration problem.
-    stream_ = std::make_unique<OcamsStream>(system_v4l2_io(), o, [this] { return ctx_ ? ctx_->now() : Time(0); });
-    device_path_ = o.device.empty() ? find_device(system_v4l2_io(), o.name) : o.device;
+    stream_ = std::make_unique<OcamsStream>(v4l2::system_v4l2_io(), o, [this] { return ctx_ ? ctx_->now() : Time(0); });
+    device_path_ = o.device.empty() ? find_device(v4l2::system_v4l2_io(), o.name) : o.device;
     const std::string left = read_text(cfg.left_info, "left"), right = read_text(cfg.right_info, "right");
     auto rectifier = std::make_shared<calibration::StereoRectifier>(
         calibration::parse_camera_info(left, cfg.left_info), calibration::parse_camera_info(right, cfg.right_info));

@@ -8,13 +8,13 @@
 
 namespace kestrel::ocams {
 
-std::string find_device(V4l2Io& io, const std::string& name) {
-  for (const auto& d : list_video_devices(io))
+std::string find_device(v4l2::V4l2Io& io, const std::string& name) {
+  for (const auto& d : v4l2::list_video_devices(io))
     if (d.card.find(name) != std::string::npos) return d.path;
   return {};
 }
 
-OcamsStream::OcamsStream(V4l2Io& io, StreamOptions options, std::function<Time()> now)
+OcamsStream::OcamsStream(v4l2::V4l2Io& io, StreamOptions options, std::function<Time()> now)
     : io_(io), options_(std::move(options)), now_(std::move(now)) {
   if (options_.device.empty()) {
     options_.device = find_device(io_, options_.name);
@@ -23,13 +23,13 @@ OcamsStream::OcamsStream(V4l2Io& io, StreamOptions options, std::function<Time()
   }
   try {
     open();
-  } catch (const DeviceLost& e) {
+  } catch (const v4l2::DeviceLost& e) {
     throw Error("no " + options_.name + " found at " + options_.device + " (" + e.what() + ")");
   }
 }
 
 void OcamsStream::open() {
-  auto camera = std::make_unique<V4l2Camera>(io_, options_.device);
+  auto camera = std::make_unique<v4l2::V4l2Camera>(io_, options_.device);
   info_ = camera->describe();
   camera->start(options_.format);
   // The oCamS's controls, by their standard ids (their names changed between kernels).
@@ -90,15 +90,15 @@ std::optional<RawCapture> OcamsStream::next(std::chrono::milliseconds wait) {
     try {
       open();
       ++counters_.reconnects;
-    } catch (const DeviceLost&) {
+    } catch (const v4l2::DeviceLost&) {
       std::this_thread::sleep_for(std::min(wait, std::chrono::milliseconds(100)));
       return std::nullopt;  // not back yet
     }
   }
-  std::optional<CapturedFrame> frame;
+  std::optional<v4l2::CapturedFrame> frame;
   try {
     frame = camera_->next(wait);
-  } catch (const DeviceLost& e) {
+  } catch (const v4l2::DeviceLost& e) {
     ++counters_.disconnects;
     lose(std::string("the camera went away (") + e.what() + ")");
     return std::nullopt;

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "device_clock.hpp"
-#include "v4l2_camera.hpp"
+#include "kestrel/v4l2/v4l2_camera.hpp"
 
 namespace kestrel::ocams {
 
@@ -27,7 +27,7 @@ struct CameraControls {
 struct StreamOptions {
   std::string device;  ///< "/dev/video0", or empty: the first device whose name holds `name`
   std::string name = "oCamS";
-  CaptureFormat format;
+  v4l2::CaptureFormat format;
   CameraControls controls;
   std::chrono::milliseconds stall_timeout{1000};
   bool reconnect = true;
@@ -52,7 +52,7 @@ class OcamsStream {
  public:
   /// Opens and starts the camera. Throws Error with "no oCamS found" when there is none, or
   /// naming what the device refuses. `now` is the runtime clock.
-  OcamsStream(V4l2Io& io, StreamOptions options, std::function<Time()> now);
+  OcamsStream(v4l2::V4l2Io& io, StreamOptions options, std::function<Time()> now);
 
   /// The next frame, waiting at most `wait`; nullopt if none came (or the device is away and
   /// `reconnect` is on). Throws Error when the device stalls or vanishes without `reconnect`.
@@ -62,7 +62,7 @@ class OcamsStream {
   /// What was set, as the device reports it, for the report: "exposure" -> 100, ...
   const std::map<std::string, int>& applied_controls() const { return applied_; }
   /// The device opened, with what it offers.
-  const DeviceInfo& device() const { return info_; }
+  const v4l2::DeviceInfo& device() const { return info_; }
   bool connected() const { return camera_ != nullptr; }
 
  private:
@@ -70,19 +70,19 @@ class OcamsStream {
   void lose(const std::string& why);
   void count_losses();
 
-  V4l2Io& io_;
+  v4l2::V4l2Io& io_;
   StreamOptions options_;
   std::function<Time()> now_;
-  std::unique_ptr<V4l2Camera> camera_;
-  DeviceInfo info_;
+  std::unique_ptr<v4l2::V4l2Camera> camera_;
+  v4l2::DeviceInfo info_;
   DeviceClock clock_;
   StreamCounters counters_;
-  CaptureCounters seen_;  // the camera's counters already added to lost
+  v4l2::CaptureCounters seen_;  // the camera's counters already added to lost
   std::map<std::string, int> applied_;
   std::chrono::steady_clock::time_point last_frame_, last_try_;
 };
 
 /// The path of the first V4L2 device whose name holds `name`, or empty.
-std::string find_device(V4l2Io& io, const std::string& name);
+std::string find_device(v4l2::V4l2Io& io, const std::string& name);
 
 }  // namespace kestrel::ocams

@@ -10,7 +10,7 @@
 #include <limits>
 #include <opencv2/imgproc.hpp>
 
-#include "camera_rig.hpp"
+#include "kestrel/camera_rig/camera_rig.hpp"
 #include "sensor_noise.hpp"
 #include "stereo_renderer.hpp"
 #include "world_scene.hpp"

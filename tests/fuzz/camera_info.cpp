@@ -1,13 +1,13 @@
 // Fuzz target: the camera_info YAML loader and the rectifier built from what it reads. Any text
 // must load or give a kestrel::Error with where and what; a pair that loads must build a rectifier
 // or be refused, never crash (the text is used as both the left and, shifted, the right file).
-#include "camera_info.hpp"
+#include "kestrel/stereo_calibration/camera_info.hpp"
 
 #include <cstdint>
 #include <kestrel/error.hpp>
 #include <string>
 
-#include "stereo_rectifier.hpp"
+#include "kestrel/stereo_calibration/stereo_rectifier.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

@@ -6,9 +6,9 @@
 #include <span>
 #include <vector>
 
-#include "frame_parser.hpp"
-#include "message_text.hpp"
-#include "messages.hpp"
+#include "kestrel/mavlink/frame_parser.hpp"
+#include "kestrel/mavlink/message_text.hpp"
+#include "kestrel/mavlink/messages.hpp"
 
 using namespace kestrel::mavlink;
 

@@ -11,7 +11,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const auto parsed = kestrel::ocams::parse_imu_line(line);
     const auto& s = parsed.sample;
-    if (!s.acceleration_mps2.allFinite() || !s.angular_rate_radps.allFinite() || !s.magnetic_field_t.allFinite())
+    if (!s.acceleration_m_s2.allFinite() || !s.angular_rate_radps.allFinite() || !s.magnetic_field_t.allFinite())
       __builtin_trap();
     if (s.orientation && !s.orientation->coeffs().allFinite()) __builtin_trap();
   } catch (const kestrel::ocams::ImuLineError&) {

@@ -7,7 +7,7 @@
 
 #include "kestrel/ros2/cdr_json.hpp"
 #include "kestrel/ros2/definitions.hpp"
-#include "kestrel/ros2/message_mapping.hpp"
+#include "kestrel/ros2_messages/message_mapping.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 1) return 0;

@@ -145,7 +145,7 @@ OUTCOMES = {
         ("t['target']['on_target'] == t['target']['frames'] == frames", "the target is on an intruder in every frame"),
     ]),
     # Take-off to 2 m, then at 6 s a 1 m step forward and a 45 degree turn: the Lee controller on
-    # the Firefly settles a 1 m step within 3 s (tests/unit/test_lee_controller.cpp), so by 12 s
+    # the Firefly settles a 1 m step within 3 s (plugins/lee_controller/tests/test_lee_controller.cpp), so by 12 s
     # the hunter holds the new point; it never touches the ground again and never needs a fallback.
     "hover_step": (12.0, [
         ("r['controller']['faults'] == 0 and r['controller']['saturated_commands'] <= 5",

@@ -7,8 +7,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "fakes/scratch_path.hpp"
+#include "kestrel/testing/scratch_path.hpp"
 #include "kestrel/runtime/graph.hpp"
+#include "kestrel/testing/plugins.hpp"
 #include "kestrel/runtime/plugin_host.hpp"
 #include "kestrel/runtime/run.hpp"
 
@@ -18,18 +19,7 @@ namespace {
 
 RunResult run(const std::string& graph, const std::vector<std::string>& overrides, std::optional<std::uint64_t> seed,
               std::optional<double> duration = {}) {
-  static PluginHost* host = [] {
-    auto* h = new PluginHost();
-    h->load_search_path();
-    return h;
-  }();
-  auto built = build_graph(GraphSource::from_file(graph), host->registry(), overrides);
-  EXPECT_TRUE(built.graph) << built.diagnostics.str();
-  if (!built.graph) return {};
-  RunOptions options;
-  options.seed = seed;
-  if (duration) options.duration_s = *duration;
-  return run_graph(*built.graph, host->registry(), options);
+  return kestrel::testing::run_built_graph(GraphSource::from_file(graph), duration, overrides, seed);
 }
 
 RunResult fly(const std::vector<std::string>& overrides, std::optional<std::uint64_t> seed = {}) {
@@ -139,7 +129,7 @@ TEST(ClosedLoop, TheDetectionLevelLoopIsReproducibleBitForBit) {
   const std::string graph = KESTREL_SOURCE_DIR "/graphs/sim_intercept_fast.yaml";
   const std::vector<std::string> line = {
       "intruder.shape=line",    "intruder.line_start_m=[6.0, -2.0, 2.5]", "intruder.line_end_m=[6.5, 2.0, 2.8]",
-      "intruder.speed_mps=2.5", "intruder.line_acceleration_mps2=3.0",    "hunter.wind_m_s=[1.0, -2.0, 0.0]",
+      "intruder.speed_m_s=2.5", "intruder.line_acceleration_m_s2=3.0",    "hunter.wind_m_s=[1.0, -2.0, 0.0]",
       "hunter.gust_std_m_s=0.4"};
   const RunResult a = run(graph, line, 7), b = run(graph, line, 7);
   ASSERT_EQ(a.outcome, RunOutcome::completed) << (a.errors.empty() ? "" : a.errors.front());

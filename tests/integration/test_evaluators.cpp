@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "kestrel/runtime/graph.hpp"
+#include "kestrel/testing/plugins.hpp"
 #include "kestrel/runtime/plugin_host.hpp"
 #include "kestrel/runtime/run.hpp"
 
@@ -14,13 +15,7 @@ using namespace kestrel;
 namespace {
 
 PluginHost& plugins() {
-  static PluginHost* host = [] {
-    auto* h = new PluginHost();
-    h->load_search_path();
-    if (!h->load(KESTREL_TEST_PLUGIN_DIR "/kestrel_test_nodes.so")) ADD_FAILURE() << h->errors().back().message;
-    return h;
-  }();
-  return *host;
+  return kestrel::testing::built_and_test_plugins();
 }
 
 RunResult run(const std::string& yaml) {

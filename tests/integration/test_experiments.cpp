@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
-#include "fakes/scratch_path.hpp"
+#include "kestrel/testing/scratch_path.hpp"
 
 extern char** environ;
 namespace fs = std::filesystem;

@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "built_plugins.hpp"
-#include "fakes/fake_px4.hpp"
-#include "fakes/udp_ports.hpp"
+#include "kestrel/testing/plugins.hpp"
+#include "kestrel/testing/fake_px4.hpp"
+#include "kestrel/testing/udp_ports.hpp"
 #include "kestrel/runtime/graph.hpp"
 #include "kestrel/runtime/run.hpp"
 

@@ -1,18 +1,18 @@
 // `mavlink_source` in a realtime graph, against a PX4 vehicle played by the test over loopback
 // UDP: it reads the vehicle's state and status, and counts the link's loss when the heartbeats stop.
-#include <gtest/gtest.h>
+#include <gmock/gmock.h>
 
 #include <atomic>
 #include <thread>
 
-#include "built_plugins.hpp"
-#include "connection_url.hpp"
-#include "fakes/udp_ports.hpp"
-#include "frame.hpp"
+#include "kestrel/testing/plugins.hpp"
+#include "kestrel/mavlink/connection_url.hpp"
+#include "kestrel/testing/udp_ports.hpp"
+#include "kestrel/mavlink/frame.hpp"
 #include "kestrel/runtime/graph.hpp"
 #include "kestrel/runtime/run.hpp"
-#include "messages.hpp"
-#include "udp_transport.hpp"
+#include "kestrel/mavlink/messages.hpp"
+#include "kestrel/mavlink/udp_transport.hpp"
 
 using namespace kestrel;
 using namespace kestrel::mavlink;
@@ -83,16 +83,26 @@ TEST(MavlinkSource, CountsTheLinkLostWhenHeartbeatsStop) {
   EXPECT_EQ(r.report.at("link").at("link_losses"), 1);
 }
 
+// A real link needs the realtime executor: a lockstep graph is refused when it is built, at the
+// node's type; a host that switches the executor afterwards gets a node that does not start.
 TEST(MavlinkSource, RefusesTheLockstepExecutor) {
   const auto graph = GraphSource::from_string(
       "nodes:\n  - {id: link, type: mavlink_source, params: {connection: 'udpin://127.0.0.1:14988'}}\n",
       "lockstep.yaml");
-  auto built = build_graph(graph, kestrel::testing::built_plugins().registry());
+  auto& registry = kestrel::testing::built_plugins().registry();
+  const auto refused = build_graph(graph, registry);
+  EXPECT_FALSE(refused.graph);
+  EXPECT_THAT(refused.diagnostics.str(),
+              ::testing::HasSubstr("lockstep.yaml:2:22: error: node 'link' (mavlink_source) needs the realtime "
+                                   "executor: it talks to a real link, but the graph runs lockstep"));
+  auto built = build_graph(graph, registry, {}, {}, ExecutorKind::realtime);
   ASSERT_TRUE(built.graph) << built.diagnostics.str();
+  built.graph->executor = ExecutorKind::lockstep;
+  built.graph->clock = ClockKind::simulated;
   RunOptions options;
   options.duration_s = 0.1;
-  const RunResult r = run_graph(*built.graph, kestrel::testing::built_plugins().registry(), options);
+  const RunResult r = run_graph(*built.graph, registry, options);
   EXPECT_EQ(r.outcome, RunOutcome::failed);
   ASSERT_FALSE(r.errors.empty());
-  EXPECT_NE(r.errors.front().find("--executor realtime"), std::string::npos) << r.errors.front();
+  EXPECT_THAT(r.errors.front(), ::testing::HasSubstr("needs the realtime executor"));
 }

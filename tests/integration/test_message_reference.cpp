@@ -21,6 +21,8 @@
 
 #include "kestrel/runtime/plugin_host.hpp"
 
+#include "kestrel/testing/plugins.hpp"
+
 using namespace kestrel;
 
 namespace {
@@ -52,8 +54,7 @@ TEST(MessageReference, EveryInTreeMessageDeclaresItsFieldsAndIsDocumented) {
         message_info<msg::AttitudeTarget>(), message_info<msg::NetFire>(), message_info<msg::NetCapture>(),
         message_info<msg::AutopilotStatus>()})
     types[info.name] = info;
-  PluginHost host;
-  host.load_search_path();
+  PluginHost& host = kestrel::testing::built_plugins();
   ASSERT_TRUE(host.errors().empty()) << host.errors().front().message;
   for (const auto& [name, entry] : host.registry().messages())
     if (name != "*") types[name] = entry.info;

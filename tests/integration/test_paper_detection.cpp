@@ -9,8 +9,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "built_plugins.hpp"
-#include "fakes/scratch_path.hpp"
+#include "kestrel/testing/plugins.hpp"
+#include "kestrel/testing/scratch_path.hpp"
 #include "kestrel/runtime/graph.hpp"
 #include "kestrel/runtime/run.hpp"
 

@@ -9,14 +9,14 @@
 #include <optional>
 
 #include "kestrel/runtime/graph.hpp"
+#include "kestrel/testing/plugins.hpp"
 #include "kestrel/runtime/plugin_host.hpp"
 #include "kestrel/runtime/run.hpp"
 
 using namespace kestrel;
 
 TEST(PaperTracking, KeepsOneIdentityOnTheFigureEight) {
-  PluginHost host;
-  host.load_search_path();
+  PluginHost& host = kestrel::testing::built_plugins();
   auto built = build_graph(GraphSource::from_file(KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml"), host.registry());
   ASSERT_TRUE(built.graph) << built.diagnostics.str();
   RunOptions options;
@@ -49,18 +49,7 @@ namespace {
 
 RunResult run_graph_file(const std::string& file, double duration, const std::vector<std::string>& overrides = {},
                          std::optional<std::uint64_t> seed = {}) {
-  static PluginHost* host = [] {
-    auto* h = new PluginHost();
-    h->load_search_path();
-    return h;
-  }();
-  auto built = build_graph(GraphSource::from_file(file), host->registry(), overrides);
-  EXPECT_TRUE(built.graph) << built.diagnostics.str();
-  if (!built.graph) return {};
-  RunOptions options;
-  options.duration_s = duration;
-  options.seed = seed;
-  return run_graph(*built.graph, host->registry(), options);
+  return kestrel::testing::run_built_graph(GraphSource::from_file(file), duration, overrides, seed);
 }
 
 }  // namespace

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "built_plugins.hpp"
-#include "fakes/scratch_path.hpp"
+#include "kestrel/testing/plugins.hpp"
+#include "kestrel/testing/scratch_path.hpp"
 #include "kestrel/mcap/reader.hpp"
 #include "kestrel/runtime/graph.hpp"
 #include "kestrel/runtime/run.hpp"

@@ -11,10 +11,10 @@
 #include <filesystem>
 #include <fstream>
 
-#include "built_plugins.hpp"
-#include "fakes/null_modem.hpp"
-#include "fakes/scratch_path.hpp"
-#include "fakes/udp_ports.hpp"
+#include "kestrel/testing/plugins.hpp"
+#include "kestrel/testing/null_modem.hpp"
+#include "kestrel/testing/scratch_path.hpp"
+#include "kestrel/testing/udp_ports.hpp"
 #include "kestrel/runtime/graph.hpp"
 #include "kestrel/runtime/run.hpp"
 
@@ -96,9 +96,12 @@ TEST(SimAutopilotLoop, ALockstepGraphIsRefusedWithTheReason) {
   const std::string port = std::to_string(kestrel::testing::free_udp_port());
   std::string yaml = loop_graph("udpin://127.0.0.1:" + port, "udpout://127.0.0.1:" + port, "position_m: [0, 0, 1]");
   yaml.replace(yaml.find("executor: realtime"), 18, "executor: lockstep");
-  const RunResult r = kestrel::testing::run_built_graph(GraphSource::from_string(yaml, "lockstep.yaml"), 1.0);
-  ASSERT_EQ(r.outcome, RunOutcome::failed);
-  EXPECT_THAT(r.errors, ::testing::Contains(::testing::HasSubstr("realtime")));
+  const auto built =
+      build_graph(GraphSource::from_string(yaml, "lockstep.yaml"), kestrel::testing::built_plugins().registry());
+  EXPECT_FALSE(built.graph);
+  EXPECT_THAT(built.diagnostics.str(), ::testing::HasSubstr("(sim_autopilot) needs the realtime executor: it talks "
+                                                            "over a real link, but the graph runs lockstep"));
+  EXPECT_THAT(built.diagnostics.str(), ::testing::HasSubstr("(mavlink_sink) needs the realtime executor"));
 }
 
 // graphs/field_intercept.yaml with nothing at the other end of its link: its camera swapped for

@@ -3,8 +3,8 @@
 // alone (RUN_SERIAL), so that other tests do not take the cores the camera needs for 30 FPS.
 #include <gmock/gmock.h>
 
-#include "built_plugins.hpp"
-#include "fakes/udp_ports.hpp"
+#include "kestrel/testing/plugins.hpp"
+#include "kestrel/testing/udp_ports.hpp"
 
 using namespace kestrel;
 

@@ -1,0 +1,32 @@
+#pragma once
+// The bytes of a MAVLink link, whatever carries them: UDP or a serial port. Everything above (the
+// link, the nodes, `kestrel mavlink listen`) sees only this interface, so tests run it over
+// loopback sockets and pseudo-terminals.
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+
+#include "kestrel/mavlink/connection_url.hpp"
+
+namespace kestrel::mavlink {
+
+/// One thread may receive while another sends (a link's reader thread and its nodes).
+class Transport {
+ public:
+  virtual ~Transport() = default;
+  /// Sends one datagram (UDP) or writes the bytes (serial). False when there is nobody to send
+  /// to yet (udpin before the first datagram) or the peer refused it.
+  virtual bool send(std::span<const std::uint8_t> bytes) = 0;
+  /// What arrived, waiting at most `timeout`; 0 bytes when nothing came. Throws kestrel::Error
+  /// (io::PortLost for a serial port) when the transport is gone.
+  virtual std::size_t receive(std::span<std::uint8_t> buffer, std::chrono::milliseconds timeout) = 0;
+  /// Where it is connected, for messages ("udpin 0.0.0.0:14540, peer 127.0.0.1:40121").
+  virtual std::string describe() const = 0;
+};
+
+/// Opens the transport a URL names. Throws kestrel::Error naming the URL and the cause.
+std::unique_ptr<Transport> open_transport(const ConnectionUrl& url);
+
+}  // namespace kestrel::mavlink

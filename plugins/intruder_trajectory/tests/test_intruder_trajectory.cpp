@@ -1,0 +1,220 @@
+// Intruder trajectories against hand-computed positions, and the intruder node in a graph.
+#include <gmock/gmock.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "kestrel/testing/scratch_path.hpp"
+#include "kestrel/runtime/graph.hpp"
+#include "kestrel/testing/plugins.hpp"
+#include "kestrel/runtime/plugin_host.hpp"
+#include "kestrel/runtime/run.hpp"
+#include "trajectory.hpp"
+
+using namespace kestrel;
+using namespace kestrel::intruder;
+
+namespace {
+
+void expect_near(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double tol = 1e-9) {
+  EXPECT_NEAR((a - b).norm(), 0.0, tol) << "got " << a.transpose() << ", expected " << b.transpose();
+}
+
+// Central differences of position must match the reported velocity.
+void expect_consistent_velocity(const Trajectory& traj, double t) {
+  const double h = 1e-5;
+  const Eigen::Vector3d numeric = (traj.at(t + h).position - traj.at(t - h).position) / (2 * h);
+  expect_near(traj.at(t).velocity, numeric, 1e-5);
+}
+
+std::filesystem::path write_csv(const std::string& name, const std::string& text) {
+  const auto file = kestrel::testing::scratch_path(name);
+  std::ofstream(file) << text;
+  return file;
+}
+
+}  // namespace
+
+TEST(FigureEight, LiesInThePlaneNormalToTheOpticalAxis) {
+  const auto camera = geometry::level_camera({0, 0, 2}, 0.0);  // looking along world +x
+  const FigureEight f(camera, 5.0, 1.0, 0.5, 12.0);
+  expect_near(f.at(0.0).position, {5, 0, 2});                  // centre
+  expect_near(f.at(3.0).position, {5, -1, 2});                 // quarter: 1 m right
+  expect_near(f.at(1.5).position, {5, -std::sqrt(0.5), 1.5});  // 0.5 m down
+  expect_near(f.at(4.5).position, {5, -std::sqrt(0.5), 2.5});  // 0.5 m up
+  expect_near(f.at(12.0).position, f.at(0.0).position);        // periodic
+  for (double t : {0.0, 1.0, 2.7, 8.1}) {
+    EXPECT_NEAR(camera.to_camera(f.at(t).position).z(), 5.0, 1e-12);
+    expect_consistent_velocity(f, t);
+  }
+  const auto turned = geometry::level_camera({0, 0, 2}, M_PI / 2);  // looking along world +y
+  expect_near(FigureEight(turned, 2.5, 1.0, 0.5, 12.0).at(0.0).position, {0, 2.5, 2});
+}
+
+TEST(StraightLine, HoldsOrBouncesAtTheEnd) {
+  const StraightLine hold({0, 0, 0}, {4, 0, 0}, 2.0, false);
+  expect_near(hold.at(1.0).position, {2, 0, 0});
+  expect_near(hold.at(1.0).velocity, {2, 0, 0});
+  expect_near(hold.at(3.0).position, {4, 0, 0});
+  expect_near(hold.at(3.0).velocity, {0, 0, 0});
+  const StraightLine bounce({0, 0, 0}, {4, 0, 0}, 2.0, true);
+  expect_near(bounce.at(3.0).position, {2, 0, 0});
+  expect_near(bounce.at(3.0).velocity, {-2, 0, 0});
+  expect_near(bounce.at(5.0).position, {2, 0, 0});
+  expect_near(bounce.at(5.0).velocity, {2, 0, 0});
+}
+
+// A line of 6 m at 2 m/s with 2 m/s^2 at the ends: 1 s up to speed over 1 m, 2 s at speed over
+// 4 m, 1 s down to rest over 1 m; a pass takes 4 s.
+TEST(StraightLine, WithAnAccelerationItStartsAndTurnsAsAMultirotorCan) {
+  const StraightLine line({0, 0, 0}, {6, 0, 0}, 2.0, true, 2.0);
+  expect_near(line.at(0.0).position, {0, 0, 0});
+  expect_near(line.at(0.0).velocity, {0, 0, 0});
+  expect_near(line.at(0.5).position, {0.25, 0, 0});
+  expect_near(line.at(0.5).velocity, {1, 0, 0});
+  expect_near(line.at(2.0).position, {3, 0, 0});
+  expect_near(line.at(2.0).velocity, {2, 0, 0});
+  expect_near(line.at(3.5).position, {5.75, 0, 0});
+  expect_near(line.at(3.5).velocity, {1, 0, 0});
+  expect_near(line.at(4.0).position, {6, 0, 0});  // at rest at the end...
+  expect_near(line.at(4.0).velocity, {0, 0, 0});
+  expect_near(line.at(4.5).position, {5.75, 0, 0});  // ...and back
+  expect_near(line.at(4.5).velocity, {-1, 0, 0});
+  expect_near(line.at(8.0).position, {0, 0, 0});
+  // Position and velocity agree (velocity is the derivative), and no step exceeds the acceleration.
+  for (double t = 0.0; t < 16.0; t += 0.01) {
+    const State a = line.at(t), b = line.at(t + 0.01);
+    EXPECT_NEAR((b.position - a.position).x() / 0.01, 0.5 * (a.velocity + b.velocity).x(), 1e-6) << t;
+    EXPECT_LE((b.velocity - a.velocity).norm() / 0.01, 2.0 + 1e-6) << t;
+  }
+  // Too short to reach the speed: a triangle, peaking at sqrt(a L) = 1 m/s over 0.5 m.
+  const StraightLine short_line({0, 0, 0}, {0.5, 0, 0}, 2.0, false, 2.0);
+  expect_near(short_line.at(0.5).velocity, {1, 0, 0});
+  expect_near(short_line.at(1.0).position, {0.5, 0, 0});
+  expect_near(short_line.at(5.0).position, {0.5, 0, 0});
+  expect_near(short_line.at(5.0).velocity, {0, 0, 0});
+}
+
+TEST(RandomManoeuvre, StaysInItsBoxUnderItsSpeedLimitAndReproduces) {
+  const Eigen::Vector3d centre(5, 0, 2), half(1.0, 1.5, 0.75);
+  const RandomManoeuvre a(centre, half, 3.0, 42), b(centre, half, 3.0, 42), c(centre, half, 3.0, 43);
+  double max_speed = 0;
+  for (double t = 0; t < 600; t += 0.05) {
+    const State s = a.at(t);
+    for (int i = 0; i < 3; ++i) EXPECT_LE(std::abs(s.position[i] - centre[i]), half[i] + 1e-9);
+    max_speed = std::max(max_speed, s.velocity.norm());
+    expect_near(s.position, b.at(t).position, 0.0);
+  }
+  EXPECT_LE(max_speed, 3.0 + 1e-9);
+  EXPECT_GT(max_speed, 0.3);  // it does manoeuvre
+  EXPECT_GT((a.at(10).position - c.at(10).position).norm(), 1e-3);
+  expect_consistent_velocity(a, 17.3);
+}
+
+TEST(RandomManoeuvre, KeepsUnderItsAccelerationLimit) {
+  // Quick manoeuvres (up to 0.5 Hz) in a wide box: without a limit they would pull more than 5 m/s^2.
+  const Eigen::Vector3d centre(5.5, 0, 2), half(2.5, 1.5, 0.75);
+  double unlimited = 0, limited = 0;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    const RandomManoeuvre free(centre, half, 3.0, seed, 0.0, 0.5), bounded(centre, half, 3.0, seed, 5.0, 0.5);
+    for (double t = 0; t < 120; t += 0.01) {
+      // Acceleration by central differences of the velocity.
+      const auto accel = [&](const RandomManoeuvre& m) {
+        return ((m.at(t + 1e-4).velocity - m.at(t - 1e-4).velocity) / 2e-4).norm();
+      };
+      unlimited = std::max(unlimited, accel(free));
+      limited = std::max(limited, accel(bounded));
+      EXPECT_LE(bounded.at(t).velocity.norm(), 3.0 + 1e-9);
+    }
+  }
+  EXPECT_LE(limited, 5.0 + 1e-6);
+  EXPECT_GT(limited, 2.0);    // it still manoeuvres hard
+  EXPECT_GT(unlimited, 5.0);  // the limit did something
+}
+
+TEST(RecordedFlight, InterpolatesHoldsAndLoops) {
+  const auto file = write_csv("kestrel-flight.csv", "t,x,y,z\n10,0,0,0\n12,2,0,0\n14,2,4,0\n");
+  const RecordedFlight hold(file, false);
+  expect_near(hold.at(1.0).position, {1, 0, 0});  // run time 1 s = file time 11 s
+  expect_near(hold.at(1.0).velocity, {1, 0, 0});
+  expect_near(hold.at(3.0).position, {2, 2, 0});
+  expect_near(hold.at(10.0).position, {2, 4, 0});
+  const RecordedFlight loop(file, true);
+  expect_near(loop.at(5.0).position, {1, 0, 0});  // 5 s = one 4 s loop + 1 s
+}
+
+TEST(RecordedFlight, BadFilesNameTheFileAndLine) {
+  EXPECT_THAT(
+      [] { RecordedFlight("/nonexistent/flight.csv", false); },
+      ::testing::ThrowsMessage<Error>(::testing::HasSubstr("cannot open trajectory file /nonexistent/flight.csv")));
+  const auto bad = write_csv("kestrel-bad.csv", "t,x,y,z\n0,0,0,0\n1,1,oops,0\n");
+  EXPECT_THAT([&] { RecordedFlight(bad, false); },
+              ::testing::ThrowsMessage<Error>(::testing::HasSubstr(bad.string() + ":3: expected four numbers")));
+  const auto backwards = write_csv("kestrel-backwards.csv", "0,0,0,0\n2,1,1,1\n1,1,1,1\n");
+  EXPECT_THAT([&] { RecordedFlight(backwards, false); },
+              ::testing::ThrowsMessage<Error>(::testing::HasSubstr(":3: times must increase")));
+  // Finite numbers whose differences overflow: an infinite duration, an infinite speed.
+  std::istringstream huge("-1e308,-1e308,0,0\n1e308,1e308,0,0\n");
+  EXPECT_THAT([&] { RecordedFlight(huge, "huge.csv", true); },
+              ::testing::ThrowsMessage<Error>(::testing::HasSubstr("huge.csv:2: the time is too far")));
+  std::istringstream tiny("0,0,0,0\n1e-320,1,0,0\n");
+  EXPECT_THAT([&] { RecordedFlight(tiny, "tiny.csv", false); },
+              ::testing::ThrowsMessage<Error>(::testing::HasSubstr("tiny.csv:2: the step from the previous row")));
+}
+
+TEST(IntruderNode, PublishesTruthAtItsRateAndThePlotIsWritten) {
+  PluginHost& host = kestrel::testing::built_plugins();
+  const auto dir = kestrel::testing::scratch_path("kestrel-intruder-plot");
+  std::filesystem::remove_all(dir);
+  const std::string yaml = R"(nodes:
+  - {id: intruder, type: intruder, params: {rate_hz: 30, distance_m: 7.5}}
+  - {id: plot, type: trajectory_plot}
+connections:
+  - {from: intruder.truth, to: plot.truth}
+duration: 2.0
+)";
+  auto built = build_graph(GraphSource::from_string(yaml), host.registry());
+  ASSERT_TRUE(built.graph) << built.diagnostics.str();
+  RunOptions options;
+  options.report_dir = dir;
+  const auto r = run_graph(*built.graph, host.registry(), options);
+  EXPECT_EQ(r.outcome, RunOutcome::completed);
+  EXPECT_EQ(r.nodes[0].messages_out, 60u);
+  EXPECT_TRUE(std::filesystem::exists(dir / "trajectory.png"));
+  std::ifstream csv(dir / "trajectory.csv");
+  int rows = 0;
+  for (std::string line; std::getline(csv, line);) ++rows;
+  EXPECT_EQ(rows, 61);  // header + 60 samples
+
+  // A recorded flight that is missing stops the run before it starts, naming the node.
+  auto missing = build_graph(
+      GraphSource::from_string("nodes:\n  - {id: i, type: intruder, params: {shape: file, file: /no/such.csv}}\n"),
+      host.registry());
+  ASSERT_TRUE(missing.graph);
+  const auto failed = run_graph(*missing.graph, host.registry());
+  EXPECT_EQ(failed.outcome, RunOutcome::failed);
+  EXPECT_THAT(failed.errors.at(0), ::testing::HasSubstr("node 'i' (intruder): could not start: cannot open"));
+}
+
+// The parameters renamed to the unit convention (_m_s, _m_s2) are refused under their old names,
+// with the new one, at the old name's place: never silently left at their defaults.
+TEST(IntruderNode, ParametersRenamedToTheUnitConventionAreRefusedUnderTheirOldNames) {
+  const std::vector<std::pair<std::string, std::string>> renamed = {{"speed_mps", "speed_m_s"},
+                                                                    {"line_acceleration_mps2", "line_acceleration_m_s2"},
+                                                                    {"max_speed_mps", "max_speed_m_s"},
+                                                                    {"max_acceleration_mps2", "max_acceleration_m_s2"}};
+  for (const auto& [old_name, new_name] : renamed) {
+    const std::string yaml = "nodes:\n  - {id: intruder, type: intruder, params: {" + old_name + ": 2.0}}\n";
+    const auto built =
+        build_graph(GraphSource::from_string(yaml, "old.yaml"), kestrel::testing::built_plugins().registry());
+    EXPECT_FALSE(built.graph) << old_name;
+    EXPECT_THAT(built.diagnostics.str(),
+                ::testing::HasSubstr("old.yaml:2:45: error: node 'intruder' (intruder): unknown parameter '" + old_name +
+                                     "' (did you mean '" + new_name + "'? '" + old_name + "' was renamed '" +
+                                     new_name + "')"));
+    const auto set_new = build_graph(GraphSource::from_string("nodes:\n  - {id: intruder, type: intruder}\n", "n.yaml"),
+                                     kestrel::testing::built_plugins().registry(), {"intruder." + new_name + "=2.0"});
+    EXPECT_TRUE(set_new.graph) << set_new.diagnostics.str();
+  }
+}

@@ -1,0 +1,95 @@
+// The link the nodes share, against a vehicle played by the test over loopback UDP.
+#include <gmock/gmock.h>
+#include <pty.h>
+#include <unistd.h>
+
+#include <array>
+#include <thread>
+
+#include "kestrel/mavlink/connection_url.hpp"
+#include "kestrel/testing/udp_ports.hpp"
+#include "link.hpp"
+#include "kestrel/mavlink/udp_transport.hpp"
+
+using namespace kestrel::mavlink;
+using namespace std::chrono_literals;
+
+namespace {
+
+template <class Predicate>
+bool eventually(Predicate done) {
+  for (int i = 0; i < 200; ++i) {
+    if (done()) return true;
+    std::this_thread::sleep_for(5ms);
+  }
+  return false;
+}
+
+}  // namespace
+
+TEST(MavlinkLink, KeepsTheAutopilotsLatestStateAndSpeaksAsItsCompanion) {
+  auto transport = kestrel::testing::listening_udp();
+  const std::uint16_t port = transport->local_port();
+  Link link(std::move(transport));
+  UdpTransport vehicle(parse_connection_url("udpout://127.0.0.1:" + std::to_string(port)));
+  FrameWriter autopilot({7, mav::comp_autopilot1});
+  FrameWriter ground_station({255, 190});
+
+  Heartbeat gcs;
+  gcs.autopilot = mav::autopilot_invalid;
+  gcs.type = mav::type_gcs;
+  vehicle.send(ground_station.encode(gcs));
+  Heartbeat hb;
+  hb.autopilot = mav::autopilot_px4;
+  hb.type = mav::type_quadrotor;
+  hb.custom_mode = 6u << 16;
+  vehicle.send(autopilot.encode(hb));
+  LocalPositionNed p;
+  p.x = 3.0f;
+  vehicle.send(autopilot.encode(p));
+  CommandAck ack;
+  ack.command = mav::cmd_component_arm_disarm;
+  vehicle.send(autopilot.encode(ack));
+
+  ASSERT_TRUE(eventually([&] { return link.view().position_count == 1 && link.view().heartbeat_count == 1; }));
+  const VehicleView view = link.view();
+  EXPECT_EQ(view.heartbeat.custom_mode, 6u << 16) << "the ground station's heartbeat is not the autopilot's";
+  EXPECT_EQ(view.system_id, 7);
+  EXPECT_EQ(view.position.x, 3.0f);
+  ASSERT_TRUE(eventually([&] { return link.view().parser.frames >= 4; }));
+  const auto acks = link.take_acks();
+  ASSERT_EQ(acks.size(), 1u);
+  EXPECT_EQ(acks[0].command, mav::cmd_component_arm_disarm);
+  EXPECT_TRUE(link.take_acks().empty());
+
+  CommandLong arm;
+  arm.command = mav::cmd_component_arm_disarm;
+  arm.param1 = 1;
+  ASSERT_TRUE(link.send(arm));
+  std::array<std::uint8_t, 512> buffer{};
+  FrameParser parser;
+  const auto frames = parser.feed(std::span(buffer.data(), vehicle.receive(buffer, 1000ms)));
+  ASSERT_EQ(frames.size(), 1u);
+  EXPECT_EQ(frames[0].system_id, 7) << "a companion speaks as part of its vehicle's system";
+  EXPECT_EQ(frames[0].component_id, mav::comp_onboard_computer);
+  EXPECT_EQ(frames[0].as<CommandLong>().param1, 1.0f);
+}
+
+TEST(MavlinkLink, OneUrlIsOneLinkInTheProcess) {
+  auto first = Link::open("udpin://127.0.0.1:14987");
+  auto second = Link::open("udpin://127.0.0.1:14987");
+  EXPECT_EQ(first.get(), second.get());
+  EXPECT_THAT(first->describe(), ::testing::HasSubstr("14987"));
+}
+
+TEST(MavlinkLink, AVanishedDeviceIsReportedAndNothingIsSentAfter) {
+  int master = -1, slave = -1;
+  char name[256];
+  ASSERT_EQ(openpty(&master, &slave, name, nullptr, nullptr), 0);
+  Link link(open_transport(parse_connection_url(std::string("serial://") + name + ":57600")));
+  ::close(master);
+  ::close(slave);
+  ASSERT_TRUE(eventually([&] { return link.failure().has_value(); }));
+  EXPECT_THAT(*link.failure(), ::testing::HasSubstr(name));
+  EXPECT_FALSE(link.send(Heartbeat{}));
+}

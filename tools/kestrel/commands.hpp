@@ -1,0 +1,126 @@
+#pragma once
+// The kestrel CLI's subcommands. Each returns the process exit code (see docs/cli.md).
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace kestrel::cli {
+
+enum ExitCode : int {
+  kOk = 0,
+  kRunFailed = 1,     // a node error under on_error: stop, or a node could not start
+  kUsage = 2,         // bad command line
+  kInvalidGraph = 3,  // the graph file is unreadable or fails validation
+  kNotFound = 4,      // unknown type for inspect, or a plugin was refused
+};
+
+struct GraphFragment {
+  std::string label;  // where its errors point: "--record"
+  std::string yaml;   // a map with `nodes` (and `connections`) added to the graph
+};
+
+struct GraphArgs {
+  std::string graph;
+  std::vector<std::string> overrides;  // --set node.param=value
+  std::vector<GraphFragment> fragments;
+  std::string executor;  // "", "lockstep" or "realtime": replaces the graph's choice
+};
+
+struct RunArgs : GraphArgs {
+  std::optional<double> duration_s;
+  std::optional<std::uint64_t> seed;
+  std::string report_dir;
+  bool stats = false;
+  bool progress = true;
+  std::string record;                 // --record FILE.mcap: a recorder node is added
+  std::optional<int> live;            // --live PORT: a foxglove_bridge node is added
+  std::optional<std::string> topics;  // --topics PATTERNS for it
+};
+
+struct MotArgs {
+  std::string ground_truth;
+  std::string test;
+  std::optional<double> iou;       // match 2D boxes with IoU >= this
+  std::optional<double> distance;  // or 3D points within this distance
+  std::string json;
+};
+
+struct PlotArgs {
+  std::string csv;
+  std::string x;
+  std::vector<std::string> y;
+  std::string output;
+  std::string meta;  // a JSON file with metrics_meta; default: metrics_meta.json beside the CSV
+};
+
+struct SweepArgs {
+  std::string graph;
+  std::vector<std::string> params;     // node.param=start:stop:step (a grid), or
+  std::string cases;                   // a CSV file of cases (see case_table.hpp)
+  std::vector<std::string> overrides;  // fixed --set values
+  std::optional<int> seeds;            // seeds 1..N per point; none: 1, or each case's own seed
+  std::optional<double> duration;
+  std::string report_dir;
+  int jobs = 0;  // 0: one per core
+};
+
+struct AbArgs {
+  std::string graph_a, graph_b;
+  std::vector<std::string> overrides;    ///< applied to both
+  std::vector<std::string> overrides_a;  ///< applied to A only, after `overrides`
+  std::vector<std::string> overrides_b;
+  int seeds = 10;
+  std::optional<double> duration;
+  std::string report_dir;
+  int jobs = 0;
+};
+
+struct McapInfoArgs {
+  std::string file;
+  bool json = false;
+  bool verify = false;  // read the whole file and check every CRC
+};
+
+struct McapCatArgs {
+  std::string file;
+  std::vector<std::string> topics;  // none: every topic
+  std::optional<std::uint64_t> limit;
+};
+
+int run_command(const RunArgs& args);
+int sweep_command(const SweepArgs& args);
+int ab_command(const AbArgs& args);
+int plot_command(const PlotArgs& args);
+int mot_command(const MotArgs& args);
+int validate_command(const GraphArgs& args);
+int dot_command(const GraphArgs& args, const std::string& output);
+int plugins_command();
+int inspect_command(const std::string& name);
+int mcap_info_command(const McapInfoArgs& args);
+int mcap_cat_command(const McapCatArgs& args);
+
+struct CalibrateArgs {
+  std::string left, right;    // folders or numbered patterns of the chessboard pairs
+  std::string board = "8x6";  // inner corners
+  double square_m = 0.025;
+  std::string out = ".";
+  std::string name = "stereo";  // camera_name prefix
+};
+/// `kestrel calibrate`: camera_info files from chessboard pairs.
+int calibrate_command(const CalibrateArgs& args);
+
+/// `kestrel devices`: V4L2 devices and serial ports, and which look like an oCamS.
+int devices_command();
+
+struct MavlinkListenArgs {
+  std::string connection;              // udpin://, udpout:// or serial:// URL
+  std::optional<double> duration_s;    // stop after this long (default: at Ctrl-C)
+  std::optional<std::uint64_t> count;  // stop after printing this many messages
+  std::vector<std::string> only;       // print only these messages (all are counted)
+  bool heartbeat = false;              // send a ground station's heartbeat at 1 Hz
+};
+/// `kestrel mavlink listen`: decoded messages, one line each, and their rates.
+int mavlink_listen_command(const MavlinkListenArgs& args);
+
+}  // namespace kestrel::cli

@@ -1,0 +1,189 @@
+// kestrel: run, validate, inspect and draw dataflow graphs of plugins.
+#include <spdlog/spdlog.h>
+
+#include <CLI/CLI.hpp>
+
+#include "commands.hpp"
+#include "kestrel/abi.hpp"
+#include "kestrel/version.hpp"
+
+int main(int argc, char** argv) {
+  using namespace kestrel::cli;
+  CLI::App app{
+      "kestrel: perception-and-control dataflow runtime.\n"
+      "Exit codes: 0 ok, 1 run failed, 2 bad command line, 3 invalid graph, 4 not found / plugin refused."};
+  app.set_version_flag("--version", std::string("kestrel ") + KESTREL_VERSION_STRING + " (commit " + KESTREL_GIT_HASH +
+                                        ")\nABI " + KESTREL_ABI_VERSION + ", plugin tag " + KESTREL_ABI_TAG);
+  app.require_subcommand(1);
+  std::string log_level = "info";
+  app.add_option("--log-level", log_level, "debug, info, warn or error")
+      ->check(CLI::IsMember({"debug", "info", "warn", "error"}));
+
+  RunArgs run;
+  auto* run_cmd = app.add_subcommand("run", "Validate a graph, then run it");
+  run_cmd->add_option("graph", run.graph, "graph YAML file")->required();
+  run_cmd->add_option("--set", run.overrides, "override a parameter: node.param=value (repeatable)");
+  run_cmd->add_option("--duration", run.duration_s, "run length in seconds (sim time for lockstep)");
+  run_cmd->add_option("--seed", run.seed, "random seed (overrides the graph's)");
+  run_cmd->add_option("--report", run.report_dir, "write DIR/report.json and DIR/report.md");
+  run_cmd
+      ->add_option("--executor", run.executor,
+                   "run with this executor instead of the graph's (realtime uses the wall clock)")
+      ->check(CLI::IsMember({"lockstep", "realtime"}));
+  run_cmd->add_flag("--stats", run.stats, "print per-node and per-connection statistics at the end");
+  run_cmd->add_flag("!--no-progress", run.progress, "no status line on the terminal");
+  run_cmd->add_option("--record", run.record,
+                      "record the run into FILE.mcap (ROS 2 messages; a `recorder` node is added, docs/recording.md)");
+  run_cmd
+      ->add_option("--live", run.live,
+                   "serve the run live on this port over the Foxglove WebSocket protocol (a `foxglove_bridge` node "
+                   "is added; open ws://HOST:PORT in Foxglove or Lichtblick, docs/recording.md)")
+      ->check(CLI::Range(0, 65535));
+  run_cmd->add_option("--topics", run.topics,
+                      "what --record records: topic patterns /NODE/PORT, '*' for all, '!PATTERN' to leave out "
+                      "(default: every connection but point clouds)");
+
+  GraphArgs validate;
+  auto* validate_cmd = app.add_subcommand("validate", "Check a graph and report every problem with file:line:col");
+  validate_cmd->add_option("graph", validate.graph, "graph YAML file")->required();
+  validate_cmd->add_option("--set", validate.overrides, "override a parameter: node.param=value (repeatable)");
+  validate_cmd
+      ->add_option("--executor", validate.executor, "check the graph as it would run with this executor instead of its own")
+      ->check(CLI::IsMember({"lockstep", "realtime"}));
+
+  GraphArgs dot;
+  std::string dot_output;
+  auto* dot_cmd = app.add_subcommand("dot", "Print a graph in Graphviz dot");
+  dot_cmd->add_option("graph", dot.graph, "graph YAML file")->required();
+  dot_cmd->add_option("--set", dot.overrides, "override a parameter: node.param=value (repeatable)");
+  dot_cmd->add_option("-o,--output", dot_output, "write to this file instead of stdout");
+
+  MotArgs mot;
+  auto* mot_cmd = app.add_subcommand("mot", "CLEAR-MOT and IDF1 of MOTChallenge CSV files (as py-motmetrics)");
+  mot_cmd
+      ->add_option("ground_truth", mot.ground_truth,
+                   "ground-truth file: frame,id,bb_left,bb_top,bb_width,bb_height,conf,x,y,z")
+      ->required();
+  mot_cmd->add_option("test", mot.test, "tracker output in the same format")->required();
+  mot_cmd->add_option("--iou", mot.iou, "match 2D boxes whose IoU is at least this (default 0.5)")
+      ->check(CLI::Range(0.0, 1.0));
+  mot_cmd->add_option("--dist", mot.distance, "match 3D points (x,y,z columns) within this distance instead")
+      ->check(CLI::PositiveNumber);
+  mot_cmd->add_option("--json", mot.json, "also write the metrics to this JSON file");
+
+  PlotArgs plot;
+  auto* plot_cmd =
+      app.add_subcommand("plot", "Plot columns of a CSV file as PNG (one panel per y entry; a+b overlays)");
+  plot_cmd->add_option("csv", plot.csv, "CSV file with a header row")->required();
+  plot_cmd->add_option("--x", plot.x, "column for the x axis")->required();
+  plot_cmd->add_option("--y", plot.y, "columns to plot, one panel each; a+b overlays a and b in one panel")
+      ->required()
+      ->delimiter(',');
+  plot_cmd->add_option("-o,--output", plot.output, "PNG file to write")->required();
+  plot_cmd->add_option("--meta", plot.meta,
+                       "units and directions from this JSON's metrics_meta (a report.json); default: "
+                       "metrics_meta.json beside the CSV, as kestrel sweep writes it");
+
+  SweepArgs sweep;
+  auto* sweep_cmd = app.add_subcommand(
+      "sweep", "Run a graph over a grid of parameter values, or a table of cases, and seeds, in parallel");
+  sweep_cmd->add_option("graph", sweep.graph, "graph YAML file")->required();
+  // --param or --cases, exactly one: plan_sweep says so, as it checks the rest.
+  sweep_cmd->add_option("--param", sweep.params, "node.param=start:stop:step (repeatable: a grid)");
+  sweep_cmd->add_option("--cases", sweep.cases,
+                        "CSV file instead of --param: a node.param per column (and optionally seed), a case per row");
+  sweep_cmd->add_option("--set", sweep.overrides, "fixed override node.param=value (repeatable)");
+  sweep_cmd->add_option("--seeds", sweep.seeds, "seeds per grid point or case (1..N); not with a seed column")
+      ->check(CLI::Range(1, 100000));
+  sweep_cmd->add_option("--duration", sweep.duration, "run length in seconds");
+  sweep_cmd->add_option("--report", sweep.report_dir, "write DIR/sweep.csv, sweep.md, sweep.png and every run's report")
+      ->required();
+  sweep_cmd->add_option("--jobs", sweep.jobs, "runs at once (default: one per core)");
+
+  AbArgs ab;
+  auto* ab_cmd =
+      app.add_subcommand("ab", "Compare two graphs on the same seeds: paired differences with 95% intervals");
+  ab_cmd->add_option("a", ab.graph_a, "graph A")->required();
+  ab_cmd->add_option("b", ab.graph_b, "graph B")->required();
+  ab_cmd->add_option("--set", ab.overrides, "override applied to both (repeatable)");
+  ab_cmd->add_option("--set-a", ab.overrides_a, "override applied to A only (repeatable; A and B may be one graph)");
+  ab_cmd->add_option("--set-b", ab.overrides_b, "override applied to B only (repeatable)");
+  ab_cmd->add_option("--seeds", ab.seeds, "number of seeds (1..N), at least 2")->check(CLI::Range(2, 100000));
+  ab_cmd->add_option("--duration", ab.duration, "run length in seconds");
+  ab_cmd->add_option("--report", ab.report_dir, "write DIR/ab.md, ab.json and every run's report")->required();
+  ab_cmd->add_option("--jobs", ab.jobs, "runs at once (default: one per core)");
+
+  auto* plugins_cmd = app.add_subcommand("plugins", "List every node type, component and message type");
+
+  std::string inspect_name;
+  auto* inspect_cmd = app.add_subcommand("inspect", "Show a node type's ports and parameters (or a component's)");
+  inspect_cmd->add_option("type", inspect_name, "node type, component (kind/name or name) or message type")->required();
+
+  auto* mcap_cmd = app.add_subcommand("mcap", "Inspect MCAP recordings")->require_subcommand(1);
+  McapInfoArgs mcap_info;
+  auto* mcap_info_cmd =
+      mcap_cmd->add_subcommand("info", "Channels, schemas, message counts and rates, time range, compression");
+  mcap_info_cmd->add_option("file", mcap_info.file, "MCAP file")->required();
+  mcap_info_cmd->add_flag("--json", mcap_info.json, "print JSON instead of text");
+  mcap_info_cmd->add_flag("--verify", mcap_info.verify, "read the whole file and check every CRC it carries");
+
+  McapCatArgs mcap_cat;
+  auto* mcap_cat_cmd = mcap_cmd->add_subcommand(
+      "cat", "Print messages as JSON lines: {\"log_time\": NS, \"topic\": T, \"message\": {...}}");
+  mcap_cat_cmd->add_option("file", mcap_cat.file, "MCAP file")->required();
+  mcap_cat_cmd->add_option("--topic", mcap_cat.topics, "only this topic (repeatable; default: every topic)");
+  mcap_cat_cmd->add_option("--limit", mcap_cat.limit, "print at most N messages");
+
+  auto* devices_cmd = app.add_subcommand(
+      "devices", "List V4L2 cameras and serial ports, with their formats, and which look like an oCamS");
+
+  CalibrateArgs calibrate;
+  auto* calibrate_cmd =
+      app.add_subcommand("calibrate", "Stereo camera_info files (left.yaml, right.yaml) from chessboard image pairs");
+  calibrate_cmd->add_option("left", calibrate.left, "folder or pattern (left/%06d.png) of the left images")->required();
+  calibrate_cmd->add_option("right", calibrate.right, "folder or pattern of the right images")->required();
+  calibrate_cmd->add_option("--board", calibrate.board, "inner corners, COLSxROWS (default 8x6)");
+  calibrate_cmd->add_option("--square", calibrate.square_m, "side of a square, metres (default 0.025)");
+  calibrate_cmd->add_option("--out", calibrate.out, "folder the two files are written to (default .)");
+  calibrate_cmd->add_option("--name", calibrate.name, "camera_name prefix (default stereo)");
+
+  auto* mavlink_cmd =
+      app.add_subcommand("mavlink", "Talk to an autopilot over MAVLink (docs/field.md)")->require_subcommand(1);
+  MavlinkListenArgs mavlink_listen;
+  auto* mavlink_listen_cmd = mavlink_cmd->add_subcommand(
+      "listen", "Print each message received (its name, then its fields, one line each) and the rates at the end");
+  mavlink_listen_cmd
+      ->add_option("connection", mavlink_listen.connection,
+                   "udpin://0.0.0.0:14540, udpout://HOST:PORT or serial:///dev/ttyACM0:921600")
+      ->required();
+  mavlink_listen_cmd->add_option("--duration", mavlink_listen.duration_s, "stop after this many seconds");
+  mavlink_listen_cmd->add_option("--count", mavlink_listen.count, "stop after printing N messages");
+  mavlink_listen_cmd->add_option("--only", mavlink_listen.only, "print only this message, e.g. HEARTBEAT (repeatable)");
+  mavlink_listen_cmd->add_flag("--heartbeat", mavlink_listen.heartbeat,
+                               "send a ground station's heartbeat at 1 Hz (some autopilots stream only then)");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kOk : kUsage;
+  }
+  spdlog::set_level(spdlog::level::from_str(log_level));
+  spdlog::set_pattern("[%l] %v");
+
+  if (*run_cmd) return run_command(run);
+  if (*validate_cmd) return validate_command(validate);
+  if (*dot_cmd) return dot_command(dot, dot_output);
+  if (*plugins_cmd) return plugins_command();
+  if (*mot_cmd) return mot_command(mot);
+  if (*sweep_cmd) return sweep_command(sweep);
+  if (*ab_cmd) return ab_command(ab);
+  if (*plot_cmd) return plot_command(plot);
+  if (*inspect_cmd) return inspect_command(inspect_name);
+  if (*mcap_info_cmd) return mcap_info_command(mcap_info);
+  if (*mcap_cat_cmd) return mcap_cat_command(mcap_cat);
+  if (*devices_cmd) return devices_command();
+  if (*calibrate_cmd) return calibrate_command(calibrate);
+  if (*mavlink_listen_cmd) return mavlink_listen_command(mavlink_listen);
+  return kUsage;
+}
