@@ -28,8 +28,8 @@
 #include <opencv2/imgproc.hpp>
 #include <string>
 
-#include "kestrel/camera_rig/camera_rig.hpp"
 #include "clustering.hpp"
+#include "kestrel/camera_rig/camera_rig.hpp"
 #include "kestrel/evaluation/body_axes.hpp"
 #include "kestrel/geometry/pinhole.hpp"
 #include "object_disparity.hpp"

@@ -13,9 +13,9 @@
 #include <string>
 
 #include "kestrel/runtime/graph.hpp"
-#include "kestrel/testing/plugins.hpp"
 #include "kestrel/runtime/plugin_host.hpp"
 #include "kestrel/runtime/run.hpp"
+#include "kestrel/testing/plugins.hpp"
 
 // Counts every heap allocation in the process, plugins included.
 namespace {
@@ -35,9 +35,7 @@ using namespace kestrel;
 
 constexpr int kMessageBytes = 1 << 20;
 
-PluginHost& plugins() {
-  return kestrel::testing::test_plugins();
-}
+PluginHost& plugins() { return kestrel::testing::test_plugins(); }
 
 // source -> relay_1 -> ... -> relay_n -> sink
 GraphConfig chain(int relays, const std::string& executor, int messages, double rate_hz, bool reuse) {

@@ -10,17 +10,15 @@
 #include <string>
 
 #include "kestrel/runtime/graph.hpp"
-#include "kestrel/testing/plugins.hpp"
 #include "kestrel/runtime/plugin_host.hpp"
 #include "kestrel/runtime/run.hpp"
+#include "kestrel/testing/plugins.hpp"
 
 namespace {
 
 using namespace kestrel;
 
-PluginHost& plugins() {
-  return kestrel::testing::built_plugins();
-}
+PluginHost& plugins() { return kestrel::testing::built_plugins(); }
 
 RunResult run(benchmark::State& state, const std::string& graph) {
   auto built = build_graph(GraphSource::from_file(KESTREL_SOURCE_DIR "/graphs/" + graph), plugins().registry());

@@ -6,12 +6,12 @@
 
 #include <kestrel/plugin.hpp>
 #include <kestrel/ros2/definitions.hpp>
-#include "kestrel/ros2_messages/message_mapping.hpp"
 #include <kestrel/version.hpp>
 #include <map>
 #include <optional>
 #include <set>
 
+#include "kestrel/ros2_messages/message_mapping.hpp"
 #include "live_server.hpp"
 
 namespace kestrel::foxglove {

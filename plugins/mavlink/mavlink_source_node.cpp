@@ -6,9 +6,9 @@
 
 #include <kestrel/plugin.hpp>
 
-#include "link_status.hpp"
 #include "kestrel/mavlink/connection_param.hpp"
 #include "link.hpp"
+#include "link_status.hpp"
 #include "vehicle_state_conversion.hpp"
 
 namespace kestrel::mavlink {

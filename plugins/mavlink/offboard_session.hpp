@@ -9,8 +9,8 @@
 #include <optional>
 #include <string>
 
-#include "kestrel/mavlink/autopilot_modes.hpp"
 #include "command_exchange.hpp"
+#include "kestrel/mavlink/autopilot_modes.hpp"
 
 namespace kestrel::mavlink {
 

@@ -6,11 +6,12 @@
 #include <filesystem>
 #include <functional>
 #include <kestrel/mcap/reader.hpp>
-#include "kestrel/ros2_messages/message_mapping.hpp"
 #include <map>
 #include <memory>
 #include <string>
 #include <vector>
+
+#include "kestrel/ros2_messages/message_mapping.hpp"
 
 namespace kestrel::replay {
 

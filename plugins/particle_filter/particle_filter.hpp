@@ -19,9 +19,7 @@ class ParticleFilter final : public Filter {
   /// Declares the particle filter's parameters.
   static void declare(ConfigSpec<ParticleOptions>& c) {
     using PF = mrpt::bayes::CParticleFilter;
-    c.param("particles", &ParticleOptions::particles)
-        .range(1, 1000000)
-        .describe("particles per track");
+    c.param("particles", &ParticleOptions::particles).range(1, 1000000).describe("particles per track");
     c.choice("resampling", &ParticleOptions::resampling,
              {{"multinomial", PF::prMultinomial},
               {"residual", PF::prResidual},
@@ -31,14 +29,8 @@ class ParticleFilter final : public Filter {
     c.param("resample_below_ess", &ParticleOptions::resample_below_ess)
         .range(0.0, 1.0)
         .describe("resample when ESS / N falls below this");
-    c.param("q", &ParticleOptions::q)
-        .range(0.0, 1e6)
-        .with_unit("m^2/s^5")
-        .describe("process noise (jerk) intensity");
-    c.param("r", &ParticleOptions::r)
-        .range(1e-9, 1e6)
-        .with_unit("m^2")
-        .describe("measurement noise variance per axis");
+    c.param("q", &ParticleOptions::q).range(0.0, 1e6).with_unit("m^2/s^5").describe("process noise (jerk) intensity");
+    c.param("r", &ParticleOptions::r).range(1e-9, 1e6).with_unit("m^2").describe("measurement noise variance per axis");
     c.param("p", &ParticleOptions::p)
         .range(1e-9, 1e6)
         .describe("initial spread: particles drawn from N(z, p diag(1, 900, 30.25))");

@@ -6,10 +6,11 @@
 #include <filesystem>
 #include <kestrel/mcap/writer.hpp>
 #include <kestrel/message.hpp>
-#include "kestrel/ros2_messages/message_mapping.hpp"
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
+
+#include "kestrel/ros2_messages/message_mapping.hpp"
 
 namespace kestrel::recorder {
 

@@ -17,12 +17,12 @@
 #include <kestrel/vehicle/simulated_multirotor.hpp>
 #include <memory>
 
+#include "flight_control.hpp"
 #include "kestrel/mavlink/connection_param.hpp"
 #include "kestrel/mavlink/connection_url.hpp"
-#include "flight_control.hpp"
 #include "kestrel/mavlink/frame_parser.hpp"
-#include "offboard_rules.hpp"
 #include "kestrel/mavlink/transport.hpp"
+#include "offboard_rules.hpp"
 
 namespace kestrel::sim_autopilot {
 
@@ -243,8 +243,8 @@ class SimAutopilot final : public Node {
       last_setpoint_s_ = now;
     }
     if (r.ack) send(*r.ack);
-    if (r.output && r.output->relay == (cfg_.launcher == SimAutopilotConfig::Launcher::relay) && r.output->channel == cfg_.launcher_channel &&
-        r.output->value >= cfg_.launcher_threshold) {
+    if (r.output && r.output->relay == (cfg_.launcher == SimAutopilotConfig::Launcher::relay) &&
+        r.output->channel == cfg_.launcher_channel && r.output->value >= cfg_.launcher_threshold) {
       ++fire_orders_;
       ctx.log().info("t = {:.2f} s: launcher output {} set to {:g}: fire", now, r.output->channel, r.output->value);
       msg::NetFire fire;

@@ -361,18 +361,18 @@ void Builder::check_executor_needs(bool executor_from_command_line) {
     const ExecutorKind needed =
         spec.executor_need() == ExecutorNeed::realtime ? ExecutorKind::realtime : ExecutorKind::lockstep;
     if (needed == g_.executor) continue;
-    diag_.error(type_where_[i],
-                fmt::format("node '{}' ({}) needs the {} executor{}, but the graph runs {} ({}); set 'executor: "
-                            "{}' in the graph or run it with --executor {}",
-                            g_.nodes[i].id, spec.type(), name(needed),
-                            spec.executor_reason().empty() ? "" : ": " + spec.executor_reason(), name(g_.executor),
-                            executor_from_command_line ? "--executor" : "the graph's 'executor'", name(needed),
-                            name(needed)));
+    diag_.error(
+        type_where_[i],
+        fmt::format("node '{}' ({}) needs the {} executor{}, but the graph runs {} ({}); set 'executor: "
+                    "{}' in the graph or run it with --executor {}",
+                    g_.nodes[i].id, spec.type(), name(needed),
+                    spec.executor_reason().empty() ? "" : ": " + spec.executor_reason(), name(g_.executor),
+                    executor_from_command_line ? "--executor" : "the graph's 'executor'", name(needed), name(needed)));
   }
 }
 
-BuildResult Builder::build(const std::vector<std::string>& overrides,
-                           const std::vector<const GraphSource*>& fragments, std::optional<ExecutorKind> executor) {
+BuildResult Builder::build(const std::vector<std::string>& overrides, const std::vector<const GraphSource*>& fragments,
+                           std::optional<ExecutorKind> executor) {
   BuildResult result;
   diag_.append(src_.read_errors);
   for (const GraphSource* fragment : fragments) diag_.append(fragment->impl().read_errors);

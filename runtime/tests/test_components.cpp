@@ -9,7 +9,7 @@ using ::testing::HasSubstr;
 
 namespace {
 
-std::string graph(const std::string& shaper) {
+std::string shaper_graph(const std::string& shaper) {
   return R"(nodes:
   - {id: src, type: counter_source, params: {rate_hz: 10, count: 4}}
   - id: s
@@ -36,30 +36,30 @@ TEST(Components, RegisteredByKindAndName) {
 }
 
 TEST(Components, ByNameWithDefaultsOrAsAMapWithParameters) {
-  EXPECT_THAT(values(run(graph("offset"))), ::testing::ElementsAre(1, 2, 3, 4));
-  EXPECT_THAT(values(run(graph("{type: offset, amount: 10}"))), ::testing::ElementsAre(10, 11, 12, 13));
-  EXPECT_THAT(values(run(graph("{type: clamp, low: 1, high: 2}"))), ::testing::ElementsAre(1, 1, 2, 2));
+  EXPECT_THAT(values(run(shaper_graph("offset"))), ::testing::ElementsAre(1, 2, 3, 4));
+  EXPECT_THAT(values(run(shaper_graph("{type: offset, amount: 10}"))), ::testing::ElementsAre(10, 11, 12, 13));
+  EXPECT_THAT(values(run(shaper_graph("{type: clamp, low: 1, high: 2}"))), ::testing::ElementsAre(1, 1, 2, 2));
   // The node's declared default applies when the parameter is absent.
-  auto r = build(graph("offset"));
+  auto r = build(shaper_graph("offset"));
   ASSERT_TRUE(r.graph);
   EXPECT_EQ(r.graph->nodes[1].params.get<ComponentConfig>("shaper").type, "offset");
 }
 
 TEST(Components, UnknownComponentsAndTheirParametersAreLocated) {
-  EXPECT_THAT(messages(build(graph("clmp"))),
+  EXPECT_THAT(messages(build(shaper_graph("clmp"))),
               ::testing::ElementsAre(HasSubstr(
                   "g.yaml:6:15: error: node 's' (shape): unknown shaper 'clmp' (did you mean 'clamp'?); known: ")));
-  EXPECT_THAT(messages(build(graph("{type: clamp, hgh: 3}"))),
+  EXPECT_THAT(messages(build(shaper_graph("{type: clamp, hgh: 3}"))),
               ::testing::ElementsAre(HasSubstr("g.yaml:6:29: error: node 's' (shape) shaper 'clamp': unknown parameter "
                                                "'hgh' (did you mean 'high'?)")));
   EXPECT_THAT(
-      messages(build(graph("{type: offset, amount: 1000}"))),
+      messages(build(shaper_graph("{type: offset, amount: 1000}"))),
       ::testing::ElementsAre(HasSubstr("g.yaml:6:38: error: node 's' (shape) shaper 'offset': parameter 'amount' = "
                                        "1000 is out of range [-100, 100]")));
-  EXPECT_THAT(messages(build(graph("{amount: 3}"))),
+  EXPECT_THAT(messages(build(shaper_graph("{amount: 3}"))),
               ::testing::ElementsAre(HasSubstr("needs a 'type' naming the shaper")));
   // Overrides replace the whole component.
-  auto r = build(graph("offset"), {"s.shaper={type: clamp, high: 0.5}"});
+  auto r = build(shaper_graph("offset"), {"s.shaper={type: clamp, high: 0.5}"});
   ASSERT_TRUE(r.graph) << r.diagnostics.str();
   EXPECT_EQ(r.graph->nodes[1].params.get<ComponentConfig>("shaper").type, "clamp");
 }

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "kestrel/testing/scratch_path.hpp"
 #include "kestrel/testing/graphs.hpp"
+#include "kestrel/testing/scratch_path.hpp"
 
 using namespace kestrel;
 using namespace kestrel::testing;

@@ -220,8 +220,8 @@ connections:
               ElementsAre(HasSubstr("g.yaml:3:24: error: node 'device' (realtime_only) needs the realtime executor: it "
                                     "stands for a real device, but the graph runs lockstep (the graph's 'executor'); "
                                     "set 'executor: realtime' in the graph or run it with --executor realtime")));
-  const auto as_realtime = build_graph(GraphSource::from_string(yaml, "g.yaml"), kestrel::testing::test_plugins().registry(),
-                                       {}, {}, ExecutorKind::realtime);
+  const auto as_realtime = build_graph(GraphSource::from_string(yaml, "g.yaml"),
+                                       kestrel::testing::test_plugins().registry(), {}, {}, ExecutorKind::realtime);
   EXPECT_THAT(messages(as_realtime),
               ElementsAre(HasSubstr("g.yaml:4:23: error: node 'check' (lockstep_only) needs the lockstep executor: it "
                                     "checks a step-by-step result, but the graph runs realtime (--executor)")));

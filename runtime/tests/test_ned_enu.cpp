@@ -7,7 +7,7 @@
 using namespace kestrel::geometry;
 using Eigen::Quaterniond;
 using Eigen::Vector3d;
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 namespace {
 void expect_near(const Vector3d& a, const Vector3d& b) {

@@ -4,9 +4,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "kestrel/testing/scratch_path.hpp"
 #include "kestrel/abi.hpp"
 #include "kestrel/testing/graphs.hpp"
+#include "kestrel/testing/scratch_path.hpp"
 
 using namespace kestrel;
 using ::testing::HasSubstr;

@@ -7,9 +7,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "kestrel/testing/graphs.hpp"
 #include "kestrel/testing/scratch_path.hpp"
 #include "kestrel/version.hpp"
-#include "kestrel/testing/graphs.hpp"
 
 using namespace kestrel;
 using namespace kestrel::testing;

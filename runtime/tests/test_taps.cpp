@@ -10,7 +10,7 @@ using ::testing::ElementsAre;
 
 namespace {
 
-const char* const kGraph = R"(nodes:
+const char* const kTapGraph = R"(nodes:
   - {id: src, type: counter_source, params: {rate_hz: 10, count: 2}}
   - {id: double, type: scale, params: {factor: 2}}
   - {id: sink, type: collector}
@@ -24,8 +24,8 @@ connections:
   - {from: blobs.out, to: blob_sink.in}
 )";
 
-std::string graph(const std::string& topics) {
-  std::string g = kGraph;
+std::string tap_graph(const std::string& topics) {
+  std::string g = kTapGraph;
   return g.replace(g.find("TOPICS"), 6, topics);
 }
 
@@ -36,7 +36,7 @@ std::vector<std::string> tapped(const RunResult& r) {
 }  // namespace
 
 TEST(Taps, ByDefaultTakeEveryConnectedOutputButTheSkippedTypesInPublicationOrder) {
-  auto r = run(graph(""));
+  auto r = run(tap_graph(""));
   ASSERT_EQ(r.outcome, RunOutcome::completed);
   // Not the blobs (the tap skips test.Blob by default), not `spare` (connected to nothing).
   EXPECT_THAT(tapped(r), ElementsAre("src.out:test.Number", "double.out:test.Number", "src.out:test.Number",
@@ -47,22 +47,22 @@ TEST(Taps, ByDefaultTakeEveryConnectedOutputButTheSkippedTypesInPublicationOrder
 }
 
 TEST(Taps, PatternsSelectByTopicAndTakeAnyType) {
-  auto all = run(graph("*"));
+  auto all = run(tap_graph("*"));
   EXPECT_EQ(tapped(all).size(), 6u);  // 2 + 2 numbers, 1 blob, 1 spare
-  auto some = run(graph("/blobs/*, /spare/out"));
+  auto some = run(tap_graph("/blobs/*, /spare/out"));
   EXPECT_THAT(tapped(some), ElementsAre("blobs.out:test.Blob", "spare.out:test.Number"));
-  auto but = run(graph("* !/double/*"));
+  auto but = run(tap_graph("* !/double/*"));
   EXPECT_EQ(tapped(but).size(), 4u);
   for (const auto& line : tapped(but)) EXPECT_THAT(line, ::testing::Not(::testing::StartsWith("double.")));
 }
 
 TEST(Taps, TakeHandWiredConnectionsBesideTheirSelectionButEachOutputOnce) {
-  std::string g = graph("/src/out");
+  std::string g = tap_graph("/src/out");
   g += "  - {from: spare.out, to: tap.in}\n";
   auto r = run(g);
   EXPECT_THAT(tapped(r), ElementsAre("src.out:test.Number", "spare.out:test.Number", "src.out:test.Number"));
 
-  std::string twice = graph("");
+  std::string twice = tap_graph("");
   twice += "  - {from: src.out, to: tap.in}\n  - {from: src.out, to: tap.in}\n";
   auto built = build(twice);
   EXPECT_FALSE(built.graph);

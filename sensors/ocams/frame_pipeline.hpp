@@ -7,8 +7,8 @@
 #include <memory>
 #include <span>
 
-#include "raw_frame.hpp"
 #include "kestrel/stereo_calibration/stereo_rectifier.hpp"
+#include "raw_frame.hpp"
 
 namespace kestrel::ocams {
 

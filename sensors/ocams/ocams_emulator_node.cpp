@@ -8,8 +8,8 @@
 #include <kestrel/plugin.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "kestrel/stereo_calibration/camera_info.hpp"
 #include "frame_pipeline.hpp"
+#include "kestrel/stereo_calibration/camera_info.hpp"
 #include "raw_recording.hpp"
 
 namespace kestrel::ocams {

@@ -5,9 +5,9 @@
 
 #include <kestrel/plugin.hpp>
 
-#include "kestrel/stereo_calibration/camera_info.hpp"
-#include "kestrel/camera_rig/camera_rig.hpp"
 #include "frame_pipeline.hpp"
+#include "kestrel/camera_rig/camera_rig.hpp"
+#include "kestrel/stereo_calibration/camera_info.hpp"
 #include "raw_recording.hpp"
 
 namespace kestrel::ocams {

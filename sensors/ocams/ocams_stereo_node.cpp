@@ -8,9 +8,9 @@
 #include <kestrel/plugin.hpp>
 #include <sstream>
 
-#include "kestrel/stereo_calibration/camera_info.hpp"
-#include "kestrel/camera_rig/camera_rig.hpp"
 #include "frame_pipeline.hpp"
+#include "kestrel/camera_rig/camera_rig.hpp"
+#include "kestrel/stereo_calibration/camera_info.hpp"
 #include "kestrel/v4l2/ocams_modes.hpp"
 #include "ocams_stream.hpp"
 #include "raw_recording.hpp"
@@ -100,7 +100,8 @@ class OcamsStereoNode final : public Node {
     return NodeSpec("ocams_stereo", "WithRobot oCamS-1CGN-U stereo camera (V4L2), rectified from camera_info files")
         .details(
             "Streams the camera's Bayer GRBG pairs, splits, demosaics and rectifies them and publishes the same "
-            "StereoFrame as sim_stereo, stamped with the camera's clock mapped onto the run's. A missing camera stops the run at start with 'no oCamS found'; a stalled or unplugged one is "
+            "StereoFrame as sim_stereo, stamped with the camera's clock mapped onto the run's. A missing camera stops "
+            "the run at start with 'no oCamS found'; a stalled or unplugged one is "
             "reopened when it returns (reconnect). The report counts frames, lost frames and reconnects.")
         .needs_executor(ExecutorNeed::realtime, "it reads a real camera (ocams_replay replays one in lockstep)")
         .output(kFrame, "rectified stereo frames")

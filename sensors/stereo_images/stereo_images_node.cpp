@@ -8,10 +8,10 @@
 #include <kestrel/plugin.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "kestrel/stereo_calibration/camera_info.hpp"
 #include "kestrel/camera_rig/camera_rig.hpp"
-#include "kestrel/stereo_images/pair_source.hpp"
+#include "kestrel/stereo_calibration/camera_info.hpp"
 #include "kestrel/stereo_calibration/stereo_rectifier.hpp"
+#include "kestrel/stereo_images/pair_source.hpp"
 
 namespace kestrel::stereo_images {
 

@@ -7,11 +7,11 @@
 #include <filesystem>
 #include <fstream>
 
-#include "kestrel/testing/scratch_path.hpp"
 #include "kestrel/runtime/graph.hpp"
-#include "kestrel/testing/plugins.hpp"
 #include "kestrel/runtime/plugin_host.hpp"
 #include "kestrel/runtime/run.hpp"
+#include "kestrel/testing/plugins.hpp"
+#include "kestrel/testing/scratch_path.hpp"
 
 using namespace kestrel;
 

@@ -6,17 +6,15 @@
 #include <cmath>
 
 #include "kestrel/runtime/graph.hpp"
-#include "kestrel/testing/plugins.hpp"
 #include "kestrel/runtime/plugin_host.hpp"
 #include "kestrel/runtime/run.hpp"
+#include "kestrel/testing/plugins.hpp"
 
 using namespace kestrel;
 
 namespace {
 
-PluginHost& plugins() {
-  return kestrel::testing::built_and_test_plugins();
-}
+PluginHost& plugins() { return kestrel::testing::built_and_test_plugins(); }
 
 RunResult run(const std::string& yaml) {
   auto built = build_graph(GraphSource::from_string(yaml, "g.yaml"), plugins().registry());

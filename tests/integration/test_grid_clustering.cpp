@@ -6,9 +6,9 @@
 #include <opencv2/imgproc.hpp>
 #include <random>
 
-#include "kestrel/camera_rig/camera_rig.hpp"
 #include "clustering.hpp"
 #include "grid_clustering.hpp"
+#include "kestrel/camera_rig/camera_rig.hpp"
 #include "stereo_matching.hpp"
 #include "stereo_renderer.hpp"
 #include "trajectory.hpp"

@@ -4,11 +4,11 @@
 
 #include <cmath>
 
-#include "kestrel/testing/plugins.hpp"
-#include "kestrel/testing/fake_px4.hpp"
-#include "kestrel/testing/udp_ports.hpp"
 #include "kestrel/runtime/graph.hpp"
 #include "kestrel/runtime/run.hpp"
+#include "kestrel/testing/fake_px4.hpp"
+#include "kestrel/testing/plugins.hpp"
+#include "kestrel/testing/udp_ports.hpp"
 
 using namespace kestrel;
 using namespace kestrel::mavlink;

@@ -5,14 +5,14 @@
 #include <atomic>
 #include <thread>
 
-#include "kestrel/testing/plugins.hpp"
 #include "kestrel/mavlink/connection_url.hpp"
-#include "kestrel/testing/udp_ports.hpp"
 #include "kestrel/mavlink/frame.hpp"
-#include "kestrel/runtime/graph.hpp"
-#include "kestrel/runtime/run.hpp"
 #include "kestrel/mavlink/messages.hpp"
 #include "kestrel/mavlink/udp_transport.hpp"
+#include "kestrel/runtime/graph.hpp"
+#include "kestrel/runtime/run.hpp"
+#include "kestrel/testing/plugins.hpp"
+#include "kestrel/testing/udp_ports.hpp"
 
 using namespace kestrel;
 using namespace kestrel::mavlink;

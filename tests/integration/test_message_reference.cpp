@@ -20,7 +20,6 @@
 #include <sstream>
 
 #include "kestrel/runtime/plugin_host.hpp"
-
 #include "kestrel/testing/plugins.hpp"
 
 using namespace kestrel;

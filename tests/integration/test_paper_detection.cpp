@@ -9,10 +9,10 @@
 #include <filesystem>
 #include <fstream>
 
-#include "kestrel/testing/plugins.hpp"
-#include "kestrel/testing/scratch_path.hpp"
 #include "kestrel/runtime/graph.hpp"
 #include "kestrel/runtime/run.hpp"
+#include "kestrel/testing/plugins.hpp"
+#include "kestrel/testing/scratch_path.hpp"
 
 using namespace kestrel;
 

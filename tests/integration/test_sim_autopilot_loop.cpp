@@ -11,12 +11,12 @@
 #include <filesystem>
 #include <fstream>
 
-#include "kestrel/testing/plugins.hpp"
-#include "kestrel/testing/null_modem.hpp"
-#include "kestrel/testing/scratch_path.hpp"
-#include "kestrel/testing/udp_ports.hpp"
 #include "kestrel/runtime/graph.hpp"
 #include "kestrel/runtime/run.hpp"
+#include "kestrel/testing/null_modem.hpp"
+#include "kestrel/testing/plugins.hpp"
+#include "kestrel/testing/scratch_path.hpp"
+#include "kestrel/testing/udp_ports.hpp"
 
 using namespace kestrel;
 

@@ -15,14 +15,14 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
-#include "kestrel/testing/plugins.hpp"
-#include "kestrel/stereo_calibration/camera_info.hpp"
-#include "kestrel/testing/scratch_path.hpp"
 #include "kestrel/runtime/graph.hpp"
 #include "kestrel/runtime/run.hpp"
-#include "kestrel/stereo_images/pair_source.hpp"
-#include "recorded_channels.hpp"
+#include "kestrel/stereo_calibration/camera_info.hpp"
 #include "kestrel/stereo_calibration/stereo_rectifier.hpp"
+#include "kestrel/stereo_images/pair_source.hpp"
+#include "kestrel/testing/plugins.hpp"
+#include "kestrel/testing/scratch_path.hpp"
+#include "recorded_channels.hpp"
 
 using namespace kestrel;
 namespace fs = std::filesystem;

@@ -7,8 +7,8 @@
 #include <kestrel/error.hpp>
 #include <sstream>
 
-#include "kestrel/stereo_calibration/chessboard_calibration.hpp"
 #include "commands.hpp"
+#include "kestrel/stereo_calibration/chessboard_calibration.hpp"
 #include "kestrel/stereo_images/pair_source.hpp"
 
 namespace kestrel::cli {

@@ -25,7 +25,7 @@ std::string sweep_csv(const SweepPlan& plan, const SweepSummary& summary) {
   std::string csv;
   for (const auto& p : plan.params) csv += csv_cell(p.key) + ",";
   csv += "seed,exit_code";
-  for (const auto& m : summary.metric_names) csv += "," + csv_cell(m);
+  for (const auto& m : summary.metric_names) csv.append(",").append(csv_cell(m));  // "," + s: GCC 12 -O3 -Wrestrict
   csv += "\n";
   for (std::size_t j = 0; j < summary.runs.size(); ++j) {
     // A case's value may hold commas (a YAML list): quoted, as RFC 4180 has it.

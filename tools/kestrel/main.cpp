@@ -48,7 +48,8 @@ int main(int argc, char** argv) {
   validate_cmd->add_option("graph", validate.graph, "graph YAML file")->required();
   validate_cmd->add_option("--set", validate.overrides, "override a parameter: node.param=value (repeatable)");
   validate_cmd
-      ->add_option("--executor", validate.executor, "check the graph as it would run with this executor instead of its own")
+      ->add_option("--executor", validate.executor,
+                   "check the graph as it would run with this executor instead of its own")
       ->check(CLI::IsMember({"lockstep", "realtime"}));
 
   GraphArgs dot;

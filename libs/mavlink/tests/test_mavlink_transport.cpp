@@ -8,12 +8,12 @@
 #include <kestrel/error.hpp>
 
 #include "kestrel/mavlink/connection_url.hpp"
-#include "kestrel/testing/udp_ports.hpp"
 #include "kestrel/mavlink/frame.hpp"
 #include "kestrel/mavlink/frame_parser.hpp"
 #include "kestrel/mavlink/messages.hpp"
 #include "kestrel/mavlink/transport.hpp"
 #include "kestrel/mavlink/udp_transport.hpp"
+#include "kestrel/testing/udp_ports.hpp"
 
 using namespace kestrel;
 using namespace kestrel::mavlink;

@@ -3,9 +3,9 @@
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 
-#include "kestrel/testing/scratch_path.hpp"
 #include "kestrel/error.hpp"
 #include "kestrel/plot/line_plot.hpp"
+#include "kestrel/testing/scratch_path.hpp"
 
 using namespace kestrel::plot;
 using ::testing::DoubleNear;

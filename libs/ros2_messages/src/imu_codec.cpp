@@ -10,7 +10,8 @@
 
 namespace kestrel::ros2::detail {
 
-namespace {
+// Named, so that the codecs, which use the same names for their parts, can share a translation unit.
+namespace imu {
 
 enum Part : std::size_t { kImu, kMag };
 const char* const kGravityRemoved = "kestrel.gravity_removed";
@@ -107,9 +108,10 @@ class ImuDecoder final : public Decoder {
   std::uint64_t dropped_ = 0;
 };
 
-}  // namespace
+}  // namespace imu
 
 TypeCodec imu_codec() {
+  using namespace imu;
   return {MessageTraits<msg::Imu>::name, channels, encode,
           [] { return std::unique_ptr<Decoder>(std::make_unique<ImuDecoder>()); }};
 }

@@ -7,7 +7,8 @@
 
 namespace kestrel::ros2::detail {
 
-namespace {
+// Named, so that the codecs, which use the same names for their parts, can share a translation unit.
+namespace point_cloud {
 
 constexpr std::uint8_t kFloat32 = 7;  // sensor_msgs/PointField FLOAT32
 constexpr std::uint32_t kPointStep = 12;
@@ -105,9 +106,10 @@ class PointCloudDecoder final : public Decoder {
   }
 };
 
-}  // namespace
+}  // namespace point_cloud
 
 TypeCodec point_cloud_codec() {
+  using namespace point_cloud;
   return {MessageTraits<msg::PointCloud>::name, channels, encode,
           [] { return std::unique_ptr<Decoder>(std::make_unique<PointCloudDecoder>()); }};
 }

@@ -17,7 +17,8 @@
 
 namespace kestrel::ros2::detail {
 
-namespace {
+// Named, so that the codecs, which use the same names for their parts, can share a translation unit.
+namespace stereo_frame {
 
 enum Part : std::size_t { kLeft, kRight, kLeftInfo, kRightInfo, kParts, kTf = kParts };
 
@@ -250,9 +251,10 @@ class StereoFrameDecoder final : public Decoder {
   std::uint64_t dropped_ = 0;
 };
 
-}  // namespace
+}  // namespace stereo_frame
 
 TypeCodec stereo_frame_codec() {
+  using namespace stereo_frame;
   return {MessageTraits<msg::StereoFrame>::name, channels, encode,
           [] { return std::unique_ptr<Decoder>(std::make_unique<StereoFrameDecoder>()); }};
 }

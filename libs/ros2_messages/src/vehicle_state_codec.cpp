@@ -8,7 +8,8 @@
 
 namespace kestrel::ros2::detail {
 
-namespace {
+// Named, so that the codecs, which use the same names for their parts, can share a translation unit.
+namespace vehicle_state {
 
 std::string body_frame(const std::string& topic) {
   const auto start = topic.find_first_not_of('/');
@@ -51,9 +52,10 @@ msg::VehicleState read(CdrReader& r) {
   return s;
 }
 
-}  // namespace
+}  // namespace vehicle_state
 
 TypeCodec vehicle_state_codec() {
+  using namespace vehicle_state;
   return {MessageTraits<msg::VehicleState>::name, channels, encode,
           [] { return single_channel_decoder<msg::VehicleState>("nav_msgs/msg/Odometry", read); }};
 }

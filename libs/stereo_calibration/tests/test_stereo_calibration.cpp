@@ -13,8 +13,8 @@
 
 #include "kestrel/stereo_calibration/camera_info.hpp"
 #include "kestrel/stereo_calibration/chessboard_calibration.hpp"
-#include "kestrel/testing/scratch_path.hpp"
 #include "kestrel/stereo_calibration/stereo_rectifier.hpp"
+#include "kestrel/testing/scratch_path.hpp"
 
 using namespace kestrel;
 using namespace kestrel::calibration;

@@ -4,9 +4,9 @@
 #include <gmock/gmock.h>
 
 #include "kestrel/runtime/graph.hpp"
-#include "kestrel/testing/plugins.hpp"
 #include "kestrel/runtime/plugin_host.hpp"
 #include "kestrel/runtime/run.hpp"
+#include "kestrel/testing/plugins.hpp"
 #include "test_nodes/scene.hpp"
 
 using namespace kestrel;

@@ -1,9 +1,11 @@
 // The command protocol's retries and results on a clock the test turns.
 #include <gmock/gmock.h>
 
+#include "command_ack.hpp"
 #include "command_exchange.hpp"
 
 using namespace kestrel::mavlink;
+using kestrel::mavlink::testing::ack;
 
 namespace {
 CommandLong arm() {
@@ -11,12 +13,6 @@ CommandLong arm() {
   c.command = mav::cmd_component_arm_disarm;
   c.param1 = 1;
   return c;
-}
-CommandAck ack(std::uint16_t command, std::uint8_t result) {
-  CommandAck a;
-  a.command = command;
-  a.result = result;
-  return a;
 }
 }  // namespace
 

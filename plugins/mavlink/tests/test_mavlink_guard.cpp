@@ -10,7 +10,7 @@
 using namespace kestrel;
 using namespace kestrel::mavlink;
 using Eigen::Vector3d;
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 TEST(SetpointGuard, RefusesWhatIsNotFiniteAndKeepsWhatIsInside) {
   SetpointGuard guard({});

@@ -7,9 +7,9 @@
 #include <thread>
 
 #include "kestrel/mavlink/connection_url.hpp"
+#include "kestrel/mavlink/udp_transport.hpp"
 #include "kestrel/testing/udp_ports.hpp"
 #include "link.hpp"
-#include "kestrel/mavlink/udp_transport.hpp"
 
 using namespace kestrel::mavlink;
 using namespace std::chrono_literals;

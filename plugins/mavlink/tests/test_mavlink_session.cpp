@@ -1,10 +1,12 @@
 // The offboard session's phases against an autopilot whose answers the test writes.
 #include <gmock/gmock.h>
 
+#include "command_ack.hpp"
 #include "offboard_session.hpp"
 
 using namespace kestrel::mavlink;
 using Phase = OffboardSession::Phase;
+using kestrel::mavlink::testing::ack;
 
 namespace {
 
@@ -14,13 +16,6 @@ AutopilotState px4(bool link_up, bool armed = false, bool offboard = false) {
   a.armed = armed;
   a.external_control = offboard;
   a.kind = AutopilotKind::px4;
-  return a;
-}
-
-CommandAck ack(std::uint16_t command, std::uint8_t result) {
-  CommandAck a;
-  a.command = command;
-  a.result = result;
   return a;
 }
 

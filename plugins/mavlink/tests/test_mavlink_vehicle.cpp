@@ -9,7 +9,7 @@
 
 using namespace kestrel::mavlink;
 using Eigen::Vector3d;
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 namespace {
 void expect_near(const Vector3d& a, const Vector3d& b) {

@@ -7,11 +7,11 @@
 #include <kestrel/messages/ground_truth.hpp>
 #include <kestrel/messages/stereo_frame.hpp>
 
-#include "kestrel/testing/scratch_path.hpp"
 #include "kestrel/mcap/writer.hpp"
 #include "kestrel/ros2/cdr.hpp"
 #include "kestrel/ros2/definitions.hpp"
 #include "kestrel/ros2_messages/message_mapping.hpp"
+#include "kestrel/testing/scratch_path.hpp"
 #include "recorded_channels.hpp"
 
 using namespace kestrel;

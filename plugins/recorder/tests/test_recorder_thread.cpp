@@ -7,12 +7,12 @@
 
 #include <filesystem>
 
-#include "kestrel/testing/scratch_path.hpp"
 #include "kestrel/mcap/reader.hpp"
 #include "kestrel/runtime/graph.hpp"
-#include "kestrel/testing/plugins.hpp"
 #include "kestrel/runtime/plugin_host.hpp"
 #include "kestrel/runtime/run.hpp"
+#include "kestrel/testing/plugins.hpp"
+#include "kestrel/testing/scratch_path.hpp"
 
 using namespace kestrel;
 namespace fs = std::filesystem;

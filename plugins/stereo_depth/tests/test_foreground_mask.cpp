@@ -13,7 +13,7 @@ using namespace kestrel::stereo;
 namespace {
 
 // The paper's camera: fx = 304 px at 640 px, b = 0.12 m, so fx b = 36.5 px m.
-msg::StereoCalibration calibration() {
+msg::StereoCalibration mask_calibration() {
   msg::StereoCalibration c;
   c.fx = c.fy = 304.0;
   c.baseline_m = 0.12;
@@ -43,7 +43,7 @@ TEST(ForegroundMask, ADroneAMetreInFrontOfACanopyStandsOutAndTheCanopyDoesNot) {
   cv::Mat d = surface(6.0);
   const cv::Rect drone(300, 230, 38, 12);  // 0.63 x 0.2 m at 5 m
   paint(d, drone, 5.0);
-  const cv::Mat mask = foreground_mask(d, calibration(), options());
+  const cv::Mat mask = foreground_mask(d, mask_calibration(), options());
   EXPECT_EQ(count(mask, drone), drone.area());
   EXPECT_EQ(cv::countNonZero(mask), drone.area());
 }
@@ -54,39 +54,39 @@ TEST(ForegroundMask, ObjectsTallerOrWiderThanTheLimitsAreBackground) {
   const cv::Rect wall(300, 200, 200, 20);   // 4.6 m wide, 0.46 m tall at 7 m
   paint(d, trunk, 7.0);
   paint(d, wall, 7.0);
-  const cv::Mat mask = foreground_mask(d, calibration(), options());
+  const cv::Mat mask = foreground_mask(d, mask_calibration(), options());
   EXPECT_EQ(cv::countNonZero(mask), 0);
   // The same trunk, cut to 0.3 m, is an object.
   cv::Mat short_trunk = surface(10.0);
   paint(short_trunk, {100, 150, 15, 13}, 7.0);
-  EXPECT_EQ(cv::countNonZero(foreground_mask(short_trunk, calibration(), options())), 15 * 13);
+  EXPECT_EQ(cv::countNonZero(foreground_mask(short_trunk, mask_calibration(), options())), 15 * 13);
 }
 
 TEST(ForegroundMask, ALessThanTheGapOrTheMinimumStepInFrontIsBackground) {
   cv::Mat d = surface(6.0);
   paint(d, {300, 230, 38, 12}, 5.7);  // 0.3 m in front
-  EXPECT_EQ(cv::countNonZero(foreground_mask(d, calibration(), options())), 0);
+  EXPECT_EQ(cv::countNonZero(foreground_mask(d, mask_calibration(), options())), 0);
   // 1 m in front of a surface at 9.5 m is 0.36 px: a full metre, yet under the 0.5 px step.
   cv::Mat far = surface(9.5);
   paint(far, {300, 230, 24, 12}, 8.5);
-  EXPECT_EQ(cv::countNonZero(foreground_mask(far, calibration(), options())), 0);
+  EXPECT_EQ(cv::countNonZero(foreground_mask(far, mask_calibration(), options())), 0);
   ForegroundOptions fine = options();
   fine.min_step_px = 0.2;
-  EXPECT_EQ(cv::countNonZero(foreground_mask(far, calibration(), fine)), 24 * 12);
+  EXPECT_EQ(cv::countNonZero(foreground_mask(far, mask_calibration(), fine)), 24 * 12);
 }
 
 TEST(ForegroundMask, TheGroundsSlopeIsNotForeground) {
   // A camera 2 m above flat ground: row v below the horizon sees it at disparity b (v - cy) / h.
   cv::Mat d(480, 640, CV_16S, cv::Scalar(-16));
   for (int v = 241; v < 480; ++v) d.row(v).setTo(cv::Scalar(0.12 * (v - 240) / 2.0 * 16.0));
-  EXPECT_EQ(cv::countNonZero(foreground_mask(d, calibration(), options())), 0);
+  EXPECT_EQ(cv::countNonZero(foreground_mask(d, mask_calibration(), options())), 0);
 }
 
 TEST(ForegroundMask, AgainstTheUnmatchedSkyAnObjectStandsOut) {
   cv::Mat d(480, 640, CV_16S, cv::Scalar(-16));  // nothing matched: the sky
   const cv::Rect drone(300, 100, 25, 8);         // at 7.5 m
   paint(d, drone, 7.5);
-  const cv::Mat mask = foreground_mask(d, calibration(), options());
+  const cv::Mat mask = foreground_mask(d, mask_calibration(), options());
   EXPECT_EQ(count(mask, drone), drone.area());
 }
 
@@ -95,18 +95,18 @@ TEST(ForegroundMask, AHoleInASurfaceIsNotAViewThroughIt) {
   cv::Mat d = surface(10.0);
   paint(d, {100, 200, 15, 40}, 7.0);
   paint(d, {100, 218, 15, 4}, -1.0);
-  EXPECT_EQ(cv::countNonZero(foreground_mask(d, calibration(), options())), 0);
+  EXPECT_EQ(cv::countNonZero(foreground_mask(d, mask_calibration(), options())), 0);
   // Taken as a view of the sky, the hole cuts the trunk into two objects short enough to stand out.
   ForegroundOptions o = options();
   o.max_hole_px = 0;
-  EXPECT_GT(cv::countNonZero(foreground_mask(d, calibration(), o)), 0);
+  EXPECT_GT(cv::countNonZero(foreground_mask(d, mask_calibration(), o)), 0);
 }
 
 TEST(ForegroundMask, SliversThinnerThanTheMinimumThicknessGo) {
   cv::Mat d = surface(6.0);
   paint(d, {100, 100, 3, 12}, 5.0);  // a sliver 3 px wide
   paint(d, {300, 230, 20, 10}, 5.0);
-  const cv::Mat mask = foreground_mask(d, calibration(), options());
+  const cv::Mat mask = foreground_mask(d, mask_calibration(), options());
   EXPECT_EQ(cv::countNonZero(mask), 20 * 10);
 }
 
@@ -116,7 +116,7 @@ TEST(ForegroundMask, NoiseOnASurfaceDoesNotStandOut) {
   cv::RNG rng(7);
   rng.fill(noise, cv::RNG::NORMAL, 0.0, 0.1 * 16.0);  // 0.1 px of matching noise
   d += noise;
-  EXPECT_EQ(cv::countNonZero(foreground_mask(d, calibration(), options())), 0);
+  EXPECT_EQ(cv::countNonZero(foreground_mask(d, mask_calibration(), options())), 0);
 }
 
 TEST(VerticalMorphology, MatchesABruteForceMinimumAndMaximum) {
@@ -156,14 +156,14 @@ TEST(ForegroundMask, TheColumnsTheRightCameraDoesNotSeeAreOutsideThePicture) {
   paint(d, {80, 200, 30, 25}, 6.0);
   ForegroundOptions o = options();
   o.unseen_left_columns = 80;
-  EXPECT_EQ(cv::countNonZero(foreground_mask(d, calibration(), o)), 0);
+  EXPECT_EQ(cv::countNonZero(foreground_mask(d, mask_calibration(), o)), 0);
   // Taken as a view of the sky, the band makes it an object.
   o.unseen_left_columns = 0;
-  EXPECT_EQ(cv::countNonZero(foreground_mask(d, calibration(), o)), 30 * 25);
+  EXPECT_EQ(cv::countNonZero(foreground_mask(d, mask_calibration(), o)), 30 * 25);
   // The same piece away from the band is one.
   cv::Mat away = surface(10.0);
   paint(away, {0, 0, 80, 480}, -1.0);
   paint(away, {200, 200, 30, 25}, 6.0);
   o.unseen_left_columns = 80;
-  EXPECT_EQ(cv::countNonZero(foreground_mask(away, calibration(), o)), 30 * 25);
+  EXPECT_EQ(cv::countNonZero(foreground_mask(away, mask_calibration(), o)), 30 * 25);
 }

@@ -9,9 +9,9 @@
 #include "kestrel/messages/detections.hpp"
 #include "kestrel/messages/tracks.hpp"
 #include "kestrel/runtime/graph.hpp"
-#include "kestrel/testing/plugins.hpp"
 #include "kestrel/runtime/plugin_host.hpp"
 #include "kestrel/runtime/run.hpp"
+#include "kestrel/testing/plugins.hpp"
 
 using namespace kestrel;
 

@@ -8,20 +8,18 @@
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
 
-#include "kestrel/testing/scratch_path.hpp"
 #include "kestrel/runtime/graph.hpp"
-#include "kestrel/testing/plugins.hpp"
 #include "kestrel/runtime/plugin_host.hpp"
 #include "kestrel/runtime/run.hpp"
+#include "kestrel/testing/plugins.hpp"
+#include "kestrel/testing/scratch_path.hpp"
 #include "test_nodes/scene.hpp"
 
 using namespace kestrel;
 
 namespace {
 
-PluginHost& plugins() {
-  return kestrel::testing::built_and_test_plugins();
-}
+PluginHost& plugins() { return kestrel::testing::built_and_test_plugins(); }
 
 struct Row {
   std::string series;

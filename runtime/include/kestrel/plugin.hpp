@@ -57,19 +57,19 @@ void register_component(Registry& r) {
 
 #define KESTREL_REGISTER_NODE(NODE_CLASS)                                                 \
   namespace {                                                                             \
-  [[maybe_unused]] const bool KESTREL_CONCAT(kestrel_registered_node_, __LINE__) =        \
+  [[maybe_unused]] const bool KESTREL_CONCAT(kestrel_registered_node_, __COUNTER__) =     \
       ::kestrel::detail::add_registration(&::kestrel::detail::register_node<NODE_CLASS>); \
   }
 
 #define KESTREL_REGISTER_COMPONENT(INTERFACE, COMPONENT_CLASS)                                                 \
   namespace {                                                                                                  \
-  [[maybe_unused]] const bool KESTREL_CONCAT(kestrel_registered_component_, __LINE__) =                        \
+  [[maybe_unused]] const bool KESTREL_CONCAT(kestrel_registered_component_, __COUNTER__) =                     \
       ::kestrel::detail::add_registration(&::kestrel::detail::register_component<INTERFACE, COMPONENT_CLASS>); \
   }
 
 #define KESTREL_REGISTER_MESSAGE(MESSAGE_TYPE)                                                            \
   namespace {                                                                                             \
-  [[maybe_unused]] const bool KESTREL_CONCAT(kestrel_registered_message_, __LINE__) =                     \
+  [[maybe_unused]] const bool KESTREL_CONCAT(kestrel_registered_message_, __COUNTER__) =                  \
       ::kestrel::detail::add_registration([](::kestrel::Registry& r) { r.add_message<MESSAGE_TYPE>(); }); \
   }
 

@@ -9,13 +9,15 @@
 #include <filesystem>
 #include <thread>
 
-#include "kestrel/testing/scratch_path.hpp"
 #include "imu_protocol.hpp"
 #include "imu_stream.hpp"
+#include "kestrel/testing/scratch_path.hpp"
+#include "kestrel/testing/steady_now.hpp"
 
 using namespace kestrel;
 using namespace kestrel::ocams;
 using namespace std::chrono_literals;
+using kestrel::testing::steady_now;
 
 namespace {
 
@@ -58,8 +60,6 @@ std::filesystem::path link_path() {
   std::filesystem::create_directories(dir);
   return dir / "ttyOCAMS";
 }
-
-Time steady_now() { return std::chrono::steady_clock::now().time_since_epoch(); }
 
 std::vector<msg::Imu> read_for(ImuStream& s, std::chrono::milliseconds total) {
   std::vector<msg::Imu> out;

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "kestrel/testing/fake_v4l2.hpp"
+#include "kestrel/testing/steady_now.hpp"
 #include "ocams_stream.hpp"
 #include "raw_frame.hpp"
 
@@ -13,6 +14,7 @@ using namespace kestrel;
 using namespace kestrel::ocams;
 using kestrel::testing::FakeV4l2;
 using namespace std::chrono_literals;
+using kestrel::testing::steady_now;
 
 namespace {
 
@@ -27,8 +29,6 @@ StreamOptions options(const FakeV4l2& dev) {
   o.stall_timeout = 150ms;
   return o;
 }
-
-Time steady_now() { return std::chrono::steady_clock::now().time_since_epoch(); }
 
 }  // namespace
 

@@ -13,13 +13,16 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
-#include "kestrel/testing/scratch_path.hpp"
 #include "kestrel/testing/graphs.hpp"
+#include "kestrel/testing/read_file.hpp"
+#include "kestrel/testing/scratch_path.hpp"
 
 extern char** environ;
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
+
+using kestrel::testing::read_file;
 
 namespace {
 
@@ -66,17 +69,12 @@ int wait_exit(const Process& p) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
-std::string read(const fs::path& f) {
-  std::ifstream in(f);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 // Waits until the process's output holds `line` (true), or the process has exited or the time is
 // up (false). The process is not reaped: wait_exit() still gets its status.
 bool wait_for_line(const Process& p, const std::string& line, std::chrono::seconds timeout) {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   while (std::chrono::steady_clock::now() < deadline) {
-    if (read(p.output).find(line) != std::string::npos) return true;
+    if (read_file(p.output).find(line) != std::string::npos) return true;
     siginfo_t info{};
     if (waitid(P_PID, static_cast<id_t>(p.pid), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid != 0)
       return false;
@@ -88,7 +86,7 @@ bool wait_for_line(const Process& p, const std::string& line, std::chrono::secon
 int run_cli(const std::vector<std::string>& args, std::string* output = nullptr) {
   const fs::path out = temp_dir("out") / "output.txt";
   const int code = wait_exit(start(args, out));
-  if (output) *output = read(out);
+  if (output) *output = read_file(out);
   return code;
 }
 
@@ -112,8 +110,8 @@ std::vector<pid_t> processes_with(const std::string& needle) {
     // the stream, and the process is simply no longer there.
     std::string cmdline, stat;
     try {
-      cmdline = read(entry.path() / "cmdline");
-      stat = read(entry.path() / "stat");
+      cmdline = read_file(entry.path() / "cmdline");
+      stat = read_file(entry.path() / "stat");
     } catch (const std::exception&) {
       continue;
     }
@@ -160,11 +158,11 @@ TEST_P(CleanShutdown, SignalDrainsFlushesAndExitsZero) {
   if (!wait_for_line(p, "[kestrel] running", std::chrono::seconds(60))) {
     kill(p.pid, SIGKILL);
     wait_exit(p);
-    FAIL() << "the run never said it was running:\n" << read(p.output);
+    FAIL() << "the run never said it was running:\n" << read_file(p.output);
   }
   ASSERT_EQ(kill(p.pid, GetParam()), 0);
-  EXPECT_EQ(wait_exit(p), 0) << read(p.output);
-  const auto report = nlohmann::json::parse(read(dir / "report" / "report.json"));
+  EXPECT_EQ(wait_exit(p), 0) << read_file(p.output);
+  const auto report = nlohmann::json::parse(read_file(dir / "report" / "report.json"));
   EXPECT_EQ(report.at("outcome"), "stopped");
   // The sink's finish() ran after the queues drained: it saw every message the source sent.
   std::uint64_t sent = 0;
@@ -172,7 +170,7 @@ TEST_P(CleanShutdown, SignalDrainsFlushesAndExitsZero) {
     if (n.at("id") == "src") sent = n.at("messages_out");
   EXPECT_GT(sent, 0u);  // the source had ticked before the signal
   EXPECT_EQ(report.at("sink").at("count"), sent);
-  EXPECT_THAT(read(p.output), HasSubstr("src.out -> slow.in"));  // --stats printed
+  EXPECT_THAT(read_file(p.output), HasSubstr("src.out -> slow.in"));  // --stats printed
   EXPECT_TRUE(fs::exists(dir / "report" / "report.md"));
 }
 
@@ -196,7 +194,7 @@ TEST_P(InterruptedSweep, StopsItsRunsAndLeavesNoneBehind) {
     return pids.size() == 2 && std::all_of(pids.begin(), pids.end(), [](pid_t pid) { return catches(pid, SIGTERM); });
   };
   for (int i = 0; i < 600 && !running(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  ASSERT_TRUE(running()) << read(p.output);
+  ASSERT_TRUE(running()) << read_file(p.output);
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
   ASSERT_EQ(kill(p.pid, GetParam()), 0);
   const int code = wait_exit_within(p, 60);
@@ -204,10 +202,10 @@ TEST_P(InterruptedSweep, StopsItsRunsAndLeavesNoneBehind) {
   const auto survivors = processes_with(runs.string());
   for (const pid_t pid : survivors) kill(pid, SIGKILL);  // leave nothing running, pass or fail
   EXPECT_TRUE(survivors.empty()) << survivors.size() << " run(s) survived the sweep";
-  EXPECT_EQ(code, 128 + GetParam()) << read(p.output);
-  EXPECT_THAT(read(p.output), HasSubstr("interrupted"));
+  EXPECT_EQ(code, 128 + GetParam()) << read_file(p.output);
+  EXPECT_THAT(read_file(p.output), HasSubstr("interrupted"));
   for (const char* run : {"000_seed1", "001_seed1"}) {
-    const auto report = nlohmann::json::parse(read(runs / run / "report.json"), nullptr, false);
+    const auto report = nlohmann::json::parse(read_file(runs / run / "report.json"), nullptr, false);
     EXPECT_EQ(report.is_object() ? report.value("outcome", "") : "no report", "stopped") << run;
   }
   EXPECT_FALSE(fs::exists(dir / "sweep" / "sweep.csv"));  // a partial sweep is not summarised
@@ -364,7 +362,7 @@ TEST(Cli, MotComputesClearMotOnMotChallengeFiles) {
     args.insert(args.end(), mode.begin(), mode.end());
     std::string out;
     ASSERT_EQ(run_cli(args, &out), 0) << out;
-    const auto m = nlohmann::json::parse(read(dir / "m.json"));
+    const auto m = nlohmann::json::parse(read_file(dir / "m.json"));
     EXPECT_DOUBLE_EQ(m.at("mota").get<double>(), 0.5) << mode[0];
     EXPECT_EQ(m.at("fp"), 1);
     EXPECT_EQ(m.at("fn"), 1);

@@ -14,8 +14,9 @@
 #include "csv_format.hpp"
 #include "experiment_analysis.hpp"
 #include "experiment_output.hpp"
-#include "kestrel/testing/scratch_path.hpp"
 #include "kestrel/error.hpp"
+#include "kestrel/testing/read_file.hpp"
+#include "kestrel/testing/scratch_path.hpp"
 #include "metrics_meta.hpp"
 #include "run_plan.hpp"
 #include "statistics.hpp"
@@ -142,6 +143,8 @@ TEST(MetricsMeta, DescribesMetricsAndTheirParts) {
   meta.add({{"tracking", {{"mota", 1}}}});
 }
 
+using kestrel::testing::read_file;
+
 namespace {
 
 const nlohmann::json kSweepMeta = {
@@ -153,11 +156,6 @@ fs::path fresh_dir(const std::string& name) {
   const fs::path dir = kestrel::testing::scratch_path(name);
   fs::remove_all(dir);
   return dir;
-}
-
-std::string read(const fs::path& file) {
-  std::ifstream in(file);
-  return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 }  // namespace
@@ -204,12 +202,12 @@ TEST(SweepOutputs, LabelJudgeAndPlotByMetricsMeta) {
   EXPECT_THAT(md, HasSubstr("- tracking.lag_s [s] (smaller magnitude is better): 0.015 at a.x=2\n"));
   EXPECT_THAT(md, Not(HasSubstr("tracking.spread (")));
   const fs::path dir = args.report_dir;
-  EXPECT_EQ(read(dir / "sweep.md"), md);
+  EXPECT_EQ(read_file(dir / "sweep.md"), md);
   EXPECT_TRUE(fs::exists(dir / "sweep.png"));
-  EXPECT_THAT(read(dir / "sweep.csv"),
+  EXPECT_THAT(read_file(dir / "sweep.csv"),
               StartsWith("a.x,seed,exit_code,tracking.error_m,tracking.frames,tracking.lag_s,tracking.score,"
                          "tracking.spread\n1,1,0,1,100,"));
-  EXPECT_EQ(nlohmann::json::parse(read(dir / "metrics_meta.json")).at("metrics_meta"), kSweepMeta);
+  EXPECT_EQ(nlohmann::json::parse(read_file(dir / "metrics_meta.json")).at("metrics_meta"), kSweepMeta);
 }
 
 TEST(AbOutputs, VerdictsUnitsAndMagnitudesInTheFiles) {
@@ -238,7 +236,7 @@ TEST(AbOutputs, VerdictsUnitsAndMagnitudesInTheFiles) {
   EXPECT_THAT(md, HasSubstr("| tracking.lag_s [s] (magnitude) | 0.32 | 0.02 | -0.3 |"));
   EXPECT_THAT(md, HasSubstr("| tracking.spread | 2 | 3 | +1 | [+1, +1] | n/a |"));
   EXPECT_THAT(md, HasSubstr("n/a: the reports' metrics_meta does not say which way is better."));
-  const auto json = nlohmann::json::parse(read(dir / "ab.json"));
+  const auto json = nlohmann::json::parse(read_file(dir / "ab.json"));
   EXPECT_EQ(json.at("metrics").at("tracking.score").at("better"), "B");
   EXPECT_EQ(json.at("metrics").at("tracking.lag_s").at("better"), "B");
   EXPECT_EQ(json.at("metrics").at("tracking.lag_s").at("by_magnitude"), true);
@@ -274,7 +272,7 @@ TEST(SweepOutputs, UndefinedMetricsAreLeftOutOfMeansAndCounted) {
   const std::string md = write_sweep_outputs(args.report_dir, args.graph, plan, summary);
   EXPECT_THAT(md, HasSubstr("| 1 | 0.75 (1 of 3 n/a) |\n| 2 | n/a |\n"));
   EXPECT_THAT(md, HasSubstr("n/a: undefined (the report gave null"));
-  const std::string csv = read(fs::path(args.report_dir) / "sweep.csv");
+  const std::string csv = read_file(fs::path(args.report_dir) / "sweep.csv");
   EXPECT_THAT(csv, HasSubstr("\n1,1,0,10,\n1,2,0,10,0.7\n"));  // an empty cell, not "nan"
   EXPECT_THAT(csv, Not(HasSubstr("nan")));
 }
@@ -306,7 +304,7 @@ TEST(AbOutputs, UndefinedMetricsAreLeftOutOfThePairsAndCounted) {
   const std::string md = write_ab_outputs(dir, args, summary);
   EXPECT_THAT(md, HasSubstr("| tracking.lag_s [s] (magnitude) (1 of 4 seeds n/a) | 0.2667 | 0.3167 | +0.05 |"));
   EXPECT_THAT(md, HasSubstr("| tracking.precision (4 of 4 seeds n/a) | n/a | n/a | n/a | n/a | n/a |"));
-  const auto json = nlohmann::json::parse(read(dir / "ab.json"));
+  const auto json = nlohmann::json::parse(read_file(dir / "ab.json"));
   EXPECT_EQ(json.at("metrics").at("tracking.lag_s").at("undefined_seeds"), 1);
   EXPECT_EQ(json.at("metrics").at("tracking.lag_s").at("seeds"), 3);
   EXPECT_EQ(json.at("metrics").at("tracking.precision").at("undefined_seeds"), 4);
@@ -501,7 +499,7 @@ TEST(SweepOutputs, CasesAreNumberedQuotedAndPlottedPerCase) {
                             "intruder.waypoints=[3, 4])\n"));
   EXPECT_THAT(md, HasSubstr("![metrics per case](sweep.png)"));
   EXPECT_TRUE(fs::exists(fs::path(args.report_dir) / "sweep.png"));
-  EXPECT_EQ(read(fs::path(args.report_dir) / "sweep.csv"),
+  EXPECT_EQ(read_file(fs::path(args.report_dir) / "sweep.csv"),
             "intruder.shape,intruder.waypoints,seed,exit_code,tracking.score\n"
             "line,\"[1, 2]\",4,0,0\n"
             "circle,,9,0,0.1\n"

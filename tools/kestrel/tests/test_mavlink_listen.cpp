@@ -8,10 +8,10 @@
 #include <thread>
 
 #include "kestrel/mavlink/connection_url.hpp"
-#include "kestrel/testing/udp_ports.hpp"
 #include "kestrel/mavlink/frame.hpp"
 #include "kestrel/mavlink/messages.hpp"
 #include "kestrel/mavlink/udp_transport.hpp"
+#include "kestrel/testing/udp_ports.hpp"
 
 using namespace kestrel::mavlink;
 using namespace std::chrono_literals;

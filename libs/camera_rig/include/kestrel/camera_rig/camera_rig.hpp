@@ -6,11 +6,11 @@
 // one for the other by changing the node's type, and both see the world alike.
 #include <Eigen/Core>
 #include <kestrel/config_spec.hpp>
-#include <string>
 #include <kestrel/geometry/frames.hpp>
 #include <kestrel/messages/ground_truth.hpp>
 #include <kestrel/messages/stereo_frame.hpp>
 #include <kestrel/messages/vehicle_state.hpp>
+#include <string>
 
 namespace kestrel::sensors {
 

@@ -38,10 +38,7 @@ class KalmanFilter final : public Filter {
   static ComponentSpec spec();
   /// Declares q, r and p.
   static void declare(ConfigSpec<KalmanConfig>& c) {
-    c.param("q", &KalmanConfig::q)
-        .range(0.0, 1e6)
-        .with_unit("m^2/s^5")
-        .describe("process noise (jerk) intensity");
+    c.param("q", &KalmanConfig::q).range(0.0, 1e6).with_unit("m^2/s^5").describe("process noise (jerk) intensity");
     c.param("r", &KalmanConfig::r)
         .range(1e-9, 1e6)
         .with_unit("m^2")

@@ -15,8 +15,8 @@
 #include "kestrel/mavlink/frame.hpp"
 #include "kestrel/mavlink/frame_parser.hpp"
 #include "kestrel/mavlink/messages.hpp"
-#include "offboard_rules.hpp"
 #include "kestrel/mavlink/udp_transport.hpp"
+#include "offboard_rules.hpp"
 
 namespace kestrel::testing {
 
