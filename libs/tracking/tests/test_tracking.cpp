@@ -6,6 +6,7 @@
 #include <random>
 
 #include "kestrel/error.hpp"
+#include "kestrel/testing/fixed_filter.hpp"
 #include "kestrel/tracking/constant_acceleration.hpp"
 #include "kestrel/tracking/deleter.hpp"
 #include "kestrel/tracking/imm_filter.hpp"
@@ -15,6 +16,7 @@
 
 using namespace kestrel;
 using namespace kestrel::tracking;
+using kestrel::testing::FixedFilter;
 
 TEST(ConstantAcceleration, TransitionIsTheKinematicModel) {
   const auto F = transition(0.1);
@@ -86,25 +88,6 @@ TEST(ConstantAcceleration, TracksAConstantAcceleration) {
   EXPECT_NEAR(kf.x(index(0, 2)), 0.8, 0.02);
   EXPECT_NEAR(kf.x(index(1, 1)), 2.0, 0.02);
 }
-
-namespace {
-
-// A filter whose estimate is the last detection, with a covariance the test chooses.
-class FixedFilter final : public TrackFilter {
- public:
-  explicit FixedFilter(const Eigen::Vector3d& z, double variance = 1.0) : p_(z), variance_(variance) {}
-  void predict(double) override {}
-  void update(const Eigen::Vector3d& z) override { p_ = z; }
-  PredictedMeasurement predicted_measurement() const override { return {p_, Eigen::Matrix3d::Identity()}; }
-  Eigen::VectorXd state() const override { return p_; }
-  Eigen::MatrixXd covariance() const override { return variance_ * Eigen::Matrix3d::Identity(); }
-
- private:
-  Eigen::Vector3d p_;
-  double variance_;
-};
-
-}  // namespace
 
 // ---- The components, each on a case whose answer is known.
 

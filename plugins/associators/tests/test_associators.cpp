@@ -7,6 +7,7 @@
 
 #include "associators.hpp"
 #include "kestrel/error.hpp"
+#include "kestrel/testing/fixed_filter.hpp"
 #include "kestrel/tracking/constant_acceleration.hpp"
 #include "kestrel/tracking/deleter.hpp"
 #include "kestrel/tracking/imm_filter.hpp"
@@ -17,6 +18,7 @@
 
 using namespace kestrel;
 using namespace kestrel::tracking;
+using kestrel::testing::FixedFilter;
 
 namespace {
 
@@ -123,21 +125,6 @@ TEST(Associators, MahalanobisUsesTheInnovationCovariance) {
 }
 
 namespace {
-
-// A filter whose estimate is the last detection, with a covariance the test chooses.
-class FixedFilter final : public TrackFilter {
- public:
-  explicit FixedFilter(const Eigen::Vector3d& z, double variance = 1.0) : p_(z), variance_(variance) {}
-  void predict(double) override {}
-  void update(const Eigen::Vector3d& z) override { p_ = z; }
-  PredictedMeasurement predicted_measurement() const override { return {p_, Eigen::Matrix3d::Identity()}; }
-  Eigen::VectorXd state() const override { return p_; }
-  Eigen::MatrixXd covariance() const override { return variance_ * Eigen::Matrix3d::Identity(); }
-
- private:
-  Eigen::Vector3d p_;
-  double variance_;
-};
 
 class FixedFilters final : public Filter {
  public:

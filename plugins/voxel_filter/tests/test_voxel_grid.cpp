@@ -1,27 +1,14 @@
 // The voxel filter on a crafted cloud.
 #include <gmock/gmock.h>
 
+#include "kestrel/testing/crafted_clouds.hpp"
 #include "voxel_grid.hpp"
 
 using namespace kestrel;
 
-namespace {
-
-using Cloud = pcl::PointCloud<pcl::PointXYZ>;
-
-// `n` points inside the cube [x, x + side)^3 (a grid, so the count per voxel is known).
-void add_block(Cloud& cloud, float x, float y, float z, int per_axis, float spacing) {
-  for (int i = 0; i < per_axis; ++i)
-    for (int j = 0; j < per_axis; ++j)
-      for (int k = 0; k < per_axis; ++k) cloud.push_back({x + i * spacing, y + j * spacing, z + k * spacing});
-}
-
-// A line of `n` points along x, `spacing` apart, starting at (x, y, z).
-void add_line(Cloud& cloud, float x, float y, float z, int n, float spacing) {
-  for (int i = 0; i < n; ++i) cloud.push_back({x + i * spacing, y, z});
-}
-
-}  // namespace
+using kestrel::testing::add_block;
+using kestrel::testing::add_line;
+using kestrel::testing::Cloud;
 
 TEST(VoxelFilter, OnePointPerOccupiedVoxelAndDepthCut) {
   Cloud cloud;
