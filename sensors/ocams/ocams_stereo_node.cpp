@@ -29,7 +29,8 @@ struct OcamsStereoConfig {
   std::int64_t gain = -1;
   std::int64_t white_balance_red = -1;
   std::int64_t white_balance_blue = -1;
-  std::string auto_exposure = "device";
+  enum class AutoExposure { device, on, off };
+  AutoExposure auto_exposure = AutoExposure::device;
   double stall_timeout_s = 1.0;
   bool reconnect = true;
   std::string raw_file;
@@ -82,8 +83,8 @@ class OcamsStereoNode final : public Node {
     c.param("gain", &C::gain).range(-1, 100000).describe("analogue gain; -1: the device's");
     c.param("white_balance_red", &C::white_balance_red).range(-1, 100000).describe("red gain; -1: the device's");
     c.param("white_balance_blue", &C::white_balance_blue).range(-1, 100000).describe("blue gain; -1: the device's");
-    c.param("auto_exposure", &C::auto_exposure)
-        .one_of({"device", "on", "off"})
+    c.choice("auto_exposure", &C::auto_exposure,
+             {{"device", C::AutoExposure::device}, {"on", C::AutoExposure::on}, {"off", C::AutoExposure::off}})
         .describe("on, off, or as the device has it; a manual exposure needs off");
     c.param("stall_timeout_s", &C::stall_timeout_s)
         .with_unit("s")
@@ -153,7 +154,9 @@ class OcamsStereoNode final : public Node {
     o.format = {static_cast<int>(cfg.width), static_cast<int>(cfg.height), static_cast<int>(cfg.fps)};
     o.controls = {unless_negative(cfg.exposure), unless_negative(cfg.gain), unless_negative(cfg.white_balance_red),
                   unless_negative(cfg.white_balance_blue),
-                  cfg.auto_exposure == "device" ? std::nullopt : std::optional<bool>(cfg.auto_exposure == "on")};
+                  cfg.auto_exposure == OcamsStereoConfig::AutoExposure::device
+                      ? std::nullopt
+                      : std::optional<bool>(cfg.auto_exposure == OcamsStereoConfig::AutoExposure::on)};
     o.stall_timeout = std::chrono::milliseconds(static_cast<int>(cfg.stall_timeout_s * 1000));
     o.reconnect = cfg.reconnect;
     // The camera first: without one, that is what the user must hear, not a calibration problem.

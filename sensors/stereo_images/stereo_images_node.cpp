@@ -23,7 +23,8 @@ struct StereoImagesConfig {
   std::string left_info;
   std::string right_info;
   std::string opencv_calibration;
-  std::string images = "raw";
+  enum class Images { raw, rectified };
+  Images images = Images::raw;
   double fps = 30.0;
   bool color = false;
   std::string mount_frame = "world";
@@ -83,8 +84,7 @@ class StereoImagesNode final : public Node {
     c.param("right_info", &C::right_info).describe("ROS camera_info YAML of the right camera");
     c.param("opencv_calibration", &C::opencv_calibration)
         .describe("or an OpenCV stereo calibration (K1, D1, K2, D2, R, T, image_width, image_height), rectified here");
-    c.param("images", &C::images)
-        .one_of({"raw", "rectified"})
+    c.choice("images", &C::images, {{"raw", C::Images::raw}, {"rectified", C::Images::rectified}})
         .describe("raw: rectified here with the calibration; rectified: already, only P's camera is used");
     c.param("fps", &C::fps).with_unit("Hz").range(0.1, 1000.0).describe("frames a second: the pairs' times");
     c.param("color", &C::color).describe("publish BGR images instead of 8-bit grey");
@@ -104,7 +104,7 @@ class StereoImagesNode final : public Node {
         source_(PairSourceOptions{cfg_.left, cfg_.right, cfg_.video, static_cast<int>(cfg_.start_index)}),
         mount_(sensors::mount_on_vehicle(cfg_.mount_frame, cfg_.mount_position_m, cfg_.mount_rpy_deg)) {
     auto [left, right] = calibration_of(cfg_);
-    if (cfg_.images == "rectified") {
+    if (cfg_.images == StereoImagesConfig::Images::rectified) {
       left = as_rectified(left);
       right = as_rectified(right);
     }
