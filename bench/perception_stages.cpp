@@ -50,9 +50,9 @@ const Frames& frames() {
 
 stereo::MatcherOptions matcher_options(int mode) {
   stereo::MatcherOptions o;  // the stereo_depth node's defaults
-  o.mode = mode == 0 ? "sgbm" : mode == 1 ? "sgbm_3way" : "bm";
+  if (mode == 1) o.mode = stereo::MatcherOptions::Mode::sgbm_3way;
   if (mode == 2) {
-    o.algorithm = "bm";
+    o.algorithm = stereo::MatcherOptions::Algorithm::bm;
     o.block_size = 15;
   }
   return o;

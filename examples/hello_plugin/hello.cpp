@@ -123,8 +123,9 @@ class DetectionCounter final : public kestrel::Node {
   }
 
   void finish(kestrel::Context& ctx) override {
-    ctx.set_report_section(cfg_.section, {{"detections_seen", seen_}});
-    ctx.describe_metric(cfg_.section + ".detections_seen", "", /*higher_is_better=*/true);
+    // Each value says its unit and which way is better; `kestrel sweep` and `ab` judge runs by it.
+    ctx.set_report_section(cfg_.section,
+                           kestrel::ReportSection().metric("detections_seen", seen_, "", kestrel::Better::higher));
     // The runtime writes the file into the report folder, checks the write and lists it.
     if (ctx.keeps_artifacts()) ctx.add_artifact("detections.csv", "t_s,x_m,y_m,z_m\n" + rows_, "every detection");
   }

@@ -67,7 +67,7 @@ class DetectionEvaluator final : public Node {
                      pairing_.unpaired_items());
     ReportSection section = detection_report(scorer_.summary(max_lag_, lag_step_));
     add_unpaired(section, pairing_.unpaired_items(), pairing_.unpaired_truths());
-    publish_section(ctx, section_, section);
+    ctx.set_report_section(section_, section);
     if (ctx.keeps_artifacts()) {
       ctx.add_artifact(section_ + ".csv", matches_csv(), "matched detections with their errors");
       ctx.add_artifact(section_ + "_per_frame.csv", counts_csv(), "TP, FP and FN per frame");

@@ -18,31 +18,20 @@ ReportSection detection_report(const DetectionSummary& s) {
   const std::optional<Eigen::Vector3d> bias_body =
       s.mean_error ? std::optional<Eigen::Vector3d>(bias_in_body_axes(*s.mean_error)) : std::nullopt;
   ReportSection section;
-  section.values = {{"frames", s.frames},
-                    {"precision", number_or_null(s.precision)},
-                    {"recall", number_or_null(s.recall)},
-                    {"tp", s.tp},
-                    {"fp", s.fp},
-                    {"fn", s.fn},
-                    {"rmse_m", axes_or_null(s.rmse)},
-                    {"mean_error_m", axes_or_null(s.mean_error)},
-                    {"rmse_body_m", axes_or_null(rmse_body)},
-                    {"bias_body_m", axes_or_null(bias_body)},
-                    {"lag_s", number_or_null(s.lag_s)}};
-  section.metrics = {{"frames", {"", std::nullopt, false}},
-                     {"precision", {"", true, false}},
-                     {"recall", {"", true, false}},
-                     {"tp", {"", true, false}},
-                     {"fp", {"", false, false}},
-                     {"fn", {"", false, false}},
-                     {"rmse_m", {"m", false, false}},
-                     {"mean_error_m", {"m", false, true}},
-                     {"rmse_body_m", {"m", false, false}},
-                     {"bias_body_m", {"m", false, true}},
-                     {"lag_s", {"s", false, true}}};
+  section.quantity("frames", s.frames)
+      .metric("precision", number_or_null(s.precision), "", Better::higher)
+      .metric("recall", number_or_null(s.recall), "", Better::higher)
+      .metric("tp", s.tp, "", Better::higher)
+      .metric("fp", s.fp, "", Better::lower)
+      .metric("fn", s.fn, "", Better::lower)
+      .metric("rmse_m", axes_or_null(s.rmse), "m", Better::lower)
+      .metric("mean_error_m", axes_or_null(s.mean_error), "m", Better::nearer_zero)
+      .metric("rmse_body_m", axes_or_null(rmse_body), "m", Better::lower)
+      .metric("bias_body_m", axes_or_null(bias_body), "m", Better::nearer_zero)
+      .metric("lag_s", number_or_null(s.lag_s), "s", Better::nearer_zero);
   const auto f3 = [](const std::optional<double>& v) { return text_or_undefined(v, "{:.3f}"); };
   const auto bias = [](const std::optional<double>& v) { return text_or_undefined(v, "{:+.3f} m"); };
-  section.markdown = fmt::format(
+  section.markdown(fmt::format(
       "| frames | precision | recall | TP | FP | FN | RMSE x [m] | RMSE y [m] | RMSE z [m] | lag [s] |\n"
       "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n"
       "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n\n"
@@ -52,11 +41,11 @@ ReportSection detection_report(const DetectionSummary& s) {
       s.frames, f3(s.precision), f3(s.recall), s.tp, s.fp, s.fn, f3(axis(s.rmse, 0)), f3(axis(s.rmse, 1)),
       f3(axis(s.rmse, 2)), f3(s.lag_s), bias(axis(s.mean_error, 0)), bias(axis(s.mean_error, 1)),
       bias(axis(s.mean_error, 2)), f3(axis(rmse_body, 0)), f3(axis(rmse_body, 1)), f3(axis(rmse_body, 2)),
-      bias(axis(bias_body, 0)), bias(axis(bias_body, 1)), bias(axis(bias_body, 2)));
+      bias(axis(bias_body, 0)), bias(axis(bias_body, 1)), bias(axis(bias_body, 2))));
   if (!s.precision || !s.recall || !s.rmse || !s.lag_s)
-    section.markdown +=
+    section.append_markdown(
         "\nUndefined: a figure with nothing to measure it on (no detections, nothing to find, no matches, or "
-        "too few to correlate for the lag).\n";
+        "too few to correlate for the lag).\n");
   return section;
 }
 

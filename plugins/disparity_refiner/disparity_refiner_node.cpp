@@ -126,22 +126,20 @@ class DisparityRefiner final : public Node {
     const std::string id = ctx.id();
     const double shift = refined_ ? shift_sum_ / static_cast<double>(refined_) : 0.0;
     ctx.set_report_section(
-        id,
-        {{"detections", detections_},
-         {"refined", refined_},
-         {"no_capture", no_capture_},
-         {"no_pixels", no_pixels_},
-         {"no_match", no_match_},
-         {"background_pixels_dropped", background_pixels_},
-         {"mean_abs_shift_px", refined_ ? nlohmann::json(shift) : nlohmann::json()}},
-        fmt::format("{} of {} detections placed from their object's disparity; left as they were: "
-                    "{} without their capture, {} with too few pixels, {} without a match. Mean "
-                    "|refined - SGBM median| disparity {:.3f} px; {} background pixels taken out "
-                    "of the objects' masks.\n",
-                    refined_, detections_, no_capture_, no_pixels_, no_match_, shift, background_pixels_));
-    for (const char* k : {"detections", "refined", "no_capture", "no_pixels", "no_match", "background_pixels_dropped"})
-      ctx.describe_quantity(id + "." + k);
-    ctx.describe_quantity(id + ".mean_abs_shift_px", "px");
+        id, ReportSection()
+                .quantity("detections", detections_)
+                .quantity("refined", refined_)
+                .quantity("no_capture", no_capture_)
+                .quantity("no_pixels", no_pixels_)
+                .quantity("no_match", no_match_)
+                .quantity("background_pixels_dropped", background_pixels_)
+                .quantity("mean_abs_shift_px", refined_ ? nlohmann::json(shift) : nlohmann::json(), "px")
+                .markdown(fmt::format("{} of {} detections placed from their object's disparity; left as they were: "
+                                      "{} without their capture, {} with too few pixels, {} without a match. Mean "
+                                      "|refined - SGBM median| disparity {:.3f} px; {} background pixels taken out "
+                                      "of the objects' masks.\n",
+                                      refined_, detections_, no_capture_, no_pixels_, no_match_, shift,
+                                      background_pixels_)));
   }
 
  private:

@@ -83,23 +83,22 @@ class FoxgloveBridgeNode final : public Node {
     const LiveServerStats s = server_.stats();
     const std::string id = ctx.id();
     ctx.set_report_section(
-        id,
-        {{"port", server_.port()},
-         {"channels", channel_ids_.size()},
-         {"clients", s.clients},
-         {"max_clients", s.max_clients},
-         {"rejected", s.rejected},
-         {"encoded", published_},
-         {"messages_sent", s.messages_sent},
-         {"bytes_sent", s.bytes_sent},
-         {"dropped", s.dropped},
-         {"unserved", unserved_},
-         {"io_cpu_s", s.io_cpu_s}},
-        fmt::format("Served {} channels on port {} to {} client(s) (at most {} at once): {} "
-                    "messages sent, {} dropped from slow clients' queues.\n",
-                    channel_ids_.size(), server_.port(), s.clients, s.max_clients, s.messages_sent, s.dropped));
-    ctx.describe_quantity(id + ".messages_sent");
-    ctx.describe_metric(id + ".dropped", "messages", false);
+        id, ReportSection()
+                .quantity("port", server_.port())
+                .quantity("channels", channel_ids_.size())
+                .quantity("clients", s.clients)
+                .quantity("max_clients", s.max_clients)
+                .metric("rejected", s.rejected, "clients", Better::lower)
+                .quantity("encoded", published_, "messages")
+                .quantity("messages_sent", s.messages_sent, "messages")
+                .quantity("bytes_sent", s.bytes_sent, "B")
+                .metric("dropped", s.dropped, "messages", Better::lower)
+                .metric("unserved", unserved_, "messages", Better::lower)
+                .metric("io_cpu_s", s.io_cpu_s, "s", Better::lower)
+                .markdown(fmt::format("Served {} channels on port {} to {} client(s) (at most {} at once): {} "
+                                      "messages sent, {} dropped from slow clients' queues.\n",
+                                      channel_ids_.size(), server_.port(), s.clients, s.max_clients, s.messages_sent,
+                                      s.dropped)));
   }
 
  private:

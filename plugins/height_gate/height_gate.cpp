@@ -64,11 +64,11 @@ class HeightGateNode final : public Node {
 
   void finish(Context& ctx) override {
     const std::string id = ctx.id();
-    ctx.set_report_section(
-        id, {{"detections", seen_}, {"dropped", dropped_}},
-        fmt::format("{} of {} detections dropped as lower than {:.2f} m.\n", dropped_, seen_, cfg_.min_height_m));
-    ctx.describe_quantity(id + ".detections");
-    ctx.describe_quantity(id + ".dropped");
+    ctx.set_report_section(id, ReportSection()
+                                   .quantity("detections", seen_)
+                                   .quantity("dropped", dropped_)
+                                   .markdown(fmt::format("{} of {} detections dropped as lower than {:.2f} m.\n",
+                                                         dropped_, seen_, cfg_.min_height_m)));
   }
 
  private:

@@ -140,22 +140,18 @@ class LeeControllerNode final : public Node {
     const std::string id = ctx.id();
     const std::uint64_t faults = bad_setpoints_ + bad_states_ + bad_outputs_;
     ctx.set_report_section(
-        id,
-        {{"commands", commands_},
-         {"saturated_commands", saturated_},
-         {"faults", faults},
-         {"bad_setpoints", bad_setpoints_},
-         {"bad_states", bad_states_}},
-        fmt::format("{} commands, {} saturated; {} fault(s) handled by {} ({} bad setpoint(s), {} "
-                    "bad state(s)).\n",
-                    commands_, saturated_, faults,
-                    cfg_.on_fault == LeeControllerConfig::OnFault::cut ? "cutting the motors" : "hovering",
-                    bad_setpoints_, bad_states_));
-    ctx.describe_quantity(id + ".commands");
-    ctx.describe_metric(id + ".saturated_commands", "", false);
-    ctx.describe_metric(id + ".faults", "", false);
-    ctx.describe_metric(id + ".bad_setpoints", "", false);
-    ctx.describe_metric(id + ".bad_states", "", false);
+        id, ReportSection()
+                .quantity("commands", commands_)
+                .metric("saturated_commands", saturated_, "", Better::lower)
+                .metric("faults", faults, "", Better::lower)
+                .metric("bad_setpoints", bad_setpoints_, "", Better::lower)
+                .metric("bad_states", bad_states_, "", Better::lower)
+                .markdown(
+                    fmt::format("{} commands, {} saturated; {} fault(s) handled by {} ({} bad setpoint(s), {} "
+                                "bad state(s)).\n",
+                                commands_, saturated_, faults,
+                                cfg_.on_fault == LeeControllerConfig::OnFault::cut ? "cutting the motors" : "hovering",
+                                bad_setpoints_, bad_states_)));
   }
 
  private:

@@ -197,33 +197,32 @@ class MavlinkSink final : public Node {
     const double rate = streamed_s > 0 ? static_cast<double>(setpoints_ - 1) / streamed_s : 0.0;
     ctx.set_report_section(
         ctx.id(),
-        {{"connection", cfg_.connection},
-         {"phase", session_.phase_name()},
-         {"refusal", session_.refusal()},
-         {"setpoints", setpoints_},
-         {"setpoint_rate_hz", setpoints_ > 1 ? nlohmann::json(rate) : nlohmann::json(nullptr)},
-         {"holds", holds_},
-         {"hold_setpoints", hold_setpoints_},
-         {"non_finite", g.non_finite},
-         {"fence_clamps", g.fence_clamps},
-         {"speed_clamps", g.speed_clamps},
-         {"tilt_clamps", g.tilt_clamps},
-         {"thrust_clamps", g.thrust_clamps},
-         {"link_losses", s.link_losses},
-         {"releases", s.releases},
-         {"refusals", s.refusals},
-         {"arm_requests", s.arm_requests},
-         {"control_requests", s.control_requests},
-         {"commands_resent", k.resent},
-         {"fired", fired_},
-         {"fire_refused", fire_refused_}},
-        fmt::format("{} setpoints at {:.1f} Hz, phase '{}'; {} hold(s), {} non-finite refused, {} link loss(es), "
-                    "{} fire order(s) sent, {} refused.\n",
-                    setpoints_, rate, session_.phase_name(), holds_, g.non_finite, s.link_losses, fired_,
-                    fire_refused_));
-    ctx.describe_metric(ctx.id() + ".setpoint_rate_hz", "Hz", true);
-    ctx.describe_metric(ctx.id() + ".link_losses", "", false);
-    ctx.describe_metric(ctx.id() + ".non_finite", "", false);
+        ReportSection()
+            .info("connection", cfg_.connection)
+            .info("phase", session_.phase_name())
+            .info("refusal", session_.refusal())
+            .quantity("setpoints", setpoints_)
+            .metric("setpoint_rate_hz", setpoints_ > 1 ? nlohmann::json(rate) : nlohmann::json(nullptr), "Hz",
+                    Better::higher)
+            .metric("holds", holds_, "", Better::lower)
+            .quantity("hold_setpoints", hold_setpoints_)
+            .metric("non_finite", g.non_finite, "", Better::lower)
+            .metric("fence_clamps", g.fence_clamps, "", Better::lower)
+            .metric("speed_clamps", g.speed_clamps, "", Better::lower)
+            .metric("tilt_clamps", g.tilt_clamps, "", Better::lower)
+            .metric("thrust_clamps", g.thrust_clamps, "", Better::lower)
+            .metric("link_losses", s.link_losses, "", Better::lower)
+            .metric("releases", s.releases, "", Better::lower)
+            .metric("refusals", s.refusals, "", Better::lower)
+            .quantity("arm_requests", s.arm_requests)
+            .quantity("control_requests", s.control_requests)
+            .metric("commands_resent", k.resent, "", Better::lower)
+            .quantity("fired", fired_)
+            .metric("fire_refused", fire_refused_, "", Better::lower)
+            .markdown(fmt::format(
+                "{} setpoints at {:.1f} Hz, phase '{}'; {} hold(s), {} non-finite refused, {} link loss(es), "
+                "{} fire order(s) sent, {} refused.\n",
+                setpoints_, rate, session_.phase_name(), holds_, g.non_finite, s.link_losses, fired_, fire_refused_)));
   }
 
  private:

@@ -84,25 +84,24 @@ class MavlinkSource final : public Node {
 
   void finish(Context& ctx) override {
     const auto& p = last_view_.parser;
-    ctx.set_report_section(ctx.id(),
-                           {{"connection", cfg_.connection},
-                            {"frames", p.frames},
-                            {"bad_checksum", p.bad_checksum},
-                            {"unknown_id", p.unknown_id},
-                            {"bad_flags", p.bad_flags},
-                            {"heartbeats", last_view_.heartbeat_count},
-                            {"states", states_},
-                            {"link_losses", link_losses_},
-                            {"autopilot", last_status_.autopilot},
-                            {"mode", last_status_.mode},
-                            {"armed", last_status_.armed}},
-                           fmt::format("{} frames from {} ({} bad checksums), {} heartbeats, {} states, {} link "
-                                       "loss(es); last mode '{}'{}.\n",
-                                       p.frames, cfg_.connection, p.bad_checksum, last_view_.heartbeat_count, states_,
-                                       link_losses_, last_status_.mode, last_status_.armed ? ", armed" : ""));
-    ctx.describe_quantity(ctx.id() + ".frames");
-    ctx.describe_metric(ctx.id() + ".bad_checksum", "frames", false);
-    ctx.describe_metric(ctx.id() + ".link_losses", "", false);
+    ctx.set_report_section(
+        ctx.id(),
+        ReportSection()
+            .info("connection", cfg_.connection)
+            .quantity("frames", p.frames)
+            .metric("bad_checksum", p.bad_checksum, "frames", Better::lower)
+            .metric("unknown_id", p.unknown_id, "frames", Better::lower)
+            .metric("bad_flags", p.bad_flags, "frames", Better::lower)
+            .quantity("heartbeats", last_view_.heartbeat_count)
+            .quantity("states", states_)
+            .metric("link_losses", link_losses_, "", Better::lower)
+            .info("autopilot", last_status_.autopilot)
+            .info("mode", last_status_.mode)
+            .info("armed", last_status_.armed)
+            .markdown(fmt::format("{} frames from {} ({} bad checksums), {} heartbeats, {} states, {} link "
+                                  "loss(es); last mode '{}'{}.\n",
+                                  p.frames, cfg_.connection, p.bad_checksum, last_view_.heartbeat_count, states_,
+                                  link_losses_, last_status_.mode, last_status_.armed ? ", armed" : "")));
   }
 
  private:

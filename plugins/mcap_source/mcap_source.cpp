@@ -103,12 +103,13 @@ class McapSourceNode final : public Node {
   }
 
   void finish(Context& ctx) override {
-    nlohmann::json section = {{"file", cfg_.file},
-                              {"published", published_},
-                              {"unpaired", channels_.unpaired()},
-                              {"problems", channels_.problems()}};
-    ctx.set_report_section(ctx.id(), section, fmt::format("Replayed {} messages from `{}`.\n", published_, cfg_.file));
-    ctx.describe_quantity(ctx.id() + ".published");
+    ctx.set_report_section(ctx.id(),
+                           ReportSection()
+                               .info("file", cfg_.file)
+                               .quantity("published", published_, "messages")
+                               .metric("unpaired", channels_.unpaired(), "messages", Better::lower)
+                               .info("problems", channels_.problems())
+                               .markdown(fmt::format("Replayed {} messages from `{}`.\n", published_, cfg_.file)));
   }
 
  private:

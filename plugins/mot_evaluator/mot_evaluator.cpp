@@ -64,7 +64,7 @@ class MotEvaluator final : public Node {
                      pairing_.unpaired_items());
     ReportSection section = tracking_report(scorer_.summary(params_.max_lag_s, params_.lag_step_s));
     add_unpaired(section, pairing_.unpaired_items(), pairing_.unpaired_truths());
-    publish_section(ctx, params_.section, section);
+    ctx.set_report_section(params_.section, section);
   }
 
  private:

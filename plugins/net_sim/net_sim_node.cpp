@@ -128,25 +128,19 @@ class NetSimNode final : public Node {
     };
     ctx.set_report_section(
         s,
-        {{"aim_rmse_m", maybe(rmse)},
-         {"time_to_align_s", maybe(aligned_at_)},
-         {"time_to_first_fire_s", maybe(first_fire_)},
-         {"fire_count", fire_times_.size()},
-         {"shots", shots_json()},
-         {"captured", captured_at_.has_value()},
-         {"time_to_capture_s", maybe(captured_at_)}},
-        fmt::format(
-            "{}. Aligned (true aim error within {:.2f} m) at {}; aim error from then on {} RMS; {} shot(s), "
-            "the first at {}.\n",
-            captured_at_ ? fmt::format("**Captured** at {:.2f} s", *captured_at_) : std::string("**Not captured**"),
-            cfg_.radius_m, text(aligned_at_, "s"), text(rmse, "m"), fire_times_.size(), text(first_fire_, "s")));
-    ctx.describe_metric(s + ".aim_rmse_m", "m", false);
-    ctx.describe_metric(s + ".time_to_align_s", "s", false);
-    ctx.describe_metric(s + ".time_to_first_fire_s", "s", false);
-    ctx.describe_quantity(s + ".fire_count");
-    ctx.describe_quantity(s + ".shots");
-    ctx.describe_metric(s + ".captured", "", true);
-    ctx.describe_metric(s + ".time_to_capture_s", "s", false);
+        ReportSection()
+            .metric("aim_rmse_m", maybe(rmse), "m", Better::lower)
+            .metric("time_to_align_s", maybe(aligned_at_), "s", Better::lower)
+            .metric("time_to_first_fire_s", maybe(first_fire_), "s", Better::lower)
+            .quantity("fire_count", fire_times_.size())
+            .quantity("shots", shots_json())
+            .metric("captured", captured_at_.has_value(), "", Better::higher)
+            .metric("time_to_capture_s", maybe(captured_at_), "s", Better::lower)
+            .markdown(fmt::format(
+                "{}. Aligned (true aim error within {:.2f} m) at {}; aim error from then on {} RMS; {} shot(s), "
+                "the first at {}.\n",
+                captured_at_ ? fmt::format("**Captured** at {:.2f} s", *captured_at_) : std::string("**Not captured**"),
+                cfg_.radius_m, text(aligned_at_, "s"), text(rmse, "m"), fire_times_.size(), text(first_fire_, "s"))));
     if (ctx.keeps_artifacts() && t_.size() >= 2) {
       ctx.add_artifact("intercept.png", plot::render_png(flight_panels(), 1000, 320),
                        "hunter and intruder: top view and heights (world frame, true states)");

@@ -94,12 +94,13 @@ class OnboardVideoNode final : public Node {
 
   void finish(Context& ctx) override {
     const std::string id = ctx.id();
-    ctx.set_report_section(id, {{"frames", written_}, {"unmatched", unmatched_}, {"beyond_max_frames", beyond_}},
-                           fmt::format("{} frames in {}.avi; {} tracks without their frame, {} beyond max_frames.\n",
-                                       written_, cfg_.name, unmatched_, beyond_));
-    ctx.describe_quantity(id + ".frames");
-    ctx.describe_quantity(id + ".unmatched");
-    ctx.describe_quantity(id + ".beyond_max_frames");
+    ctx.set_report_section(
+        id, ReportSection()
+                .quantity("frames", written_)
+                .quantity("unmatched", unmatched_)
+                .quantity("beyond_max_frames", beyond_)
+                .markdown(fmt::format("{} frames in {}.avi; {} tracks without their frame, {} beyond max_frames.\n",
+                                      written_, cfg_.name, unmatched_, beyond_)));
     if (!writer_.isOpened()) return;
     writer_.release();
     std::ifstream in(file_, std::ios::binary);

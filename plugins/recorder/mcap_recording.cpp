@@ -67,12 +67,12 @@ void McapRecording::write_metadata(const std::string& name, const mcap::KeyValue
 
 void McapRecording::finish() { writer_.finish(); }
 
-nlohmann::json McapRecording::summary() const {
-  return {{"messages", messages_},
-          {"bytes", bytes_},
-          {"channels", channels_.size()},
-          {"by_topic", by_topic_},
-          {"unrecorded", unrecorded_}};
+void McapRecording::report(ReportSection& section) const {
+  section.quantity("messages", messages_)
+      .quantity("bytes", bytes_, "B")
+      .quantity("channels", channels_.size())
+      .quantity("by_topic", by_topic_)
+      .metric("unrecorded", unrecorded_, "messages", Better::lower);
 }
 
 std::uint64_t McapRecording::unrecorded() const {

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <kestrel/mcap/writer.hpp>
 #include <kestrel/message.hpp>
+#include <kestrel/report_section.hpp>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -30,8 +31,11 @@ class McapRecording {
   /// Writes the summary and closes the file.
   void finish();
 
-  /// {"messages", "bytes", "channels", "by_topic": {TOPIC: count}, "unrecorded": {TYPE: count}}.
-  nlohmann::json summary() const;
+  /// Adds what was recorded to a section: "messages", "bytes", "channels", "by_topic":
+  /// {TOPIC: count}, "unrecorded": {TYPE: count}.
+  void report(ReportSection& section) const;
+  std::uint64_t messages() const { return messages_; }
+  std::size_t channels() const { return channels_.size(); }
   std::uint64_t unrecorded() const;
 
  private:

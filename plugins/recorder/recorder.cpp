@@ -82,18 +82,15 @@ class RecorderNode final : public Node {
     if (realtime_) recording_.write_metadata("kestrel.recorder", {{"dropped", std::to_string(dropped)}});
     recording_.finish();
     if (!writer_error_.empty()) throw Error("writing " + cfg_.file + ": " + writer_error_);
-    nlohmann::json section = recording_.summary();
-    section["file"] = cfg_.file;
-    section["dropped"] = dropped;
-    const std::string id = ctx.id();
-    ctx.set_report_section(
-        id, section,
-        fmt::format("Recorded {} ROS 2 messages on {} channels into `{}`; {} dropped, {} of "
-                    "types with no ROS 2 mapping.\n",
-                    section["messages"].get<std::uint64_t>(), section["channels"].get<std::uint64_t>(), cfg_.file,
-                    dropped, recording_.unrecorded()));
-    ctx.describe_quantity(id + ".messages");
-    ctx.describe_metric(id + ".dropped", "messages", false);
+    ReportSection section;
+    recording_.report(section);
+    section.info("file", cfg_.file)
+        .metric("dropped", dropped, "messages", Better::lower)
+        .markdown(fmt::format("Recorded {} ROS 2 messages on {} channels into `{}`; {} dropped, {} of "
+                              "types with no ROS 2 mapping.\n",
+                              recording_.messages(), recording_.channels(), cfg_.file, dropped,
+                              recording_.unrecorded()));
+    ctx.set_report_section(ctx.id(), section);
   }
 
  private:

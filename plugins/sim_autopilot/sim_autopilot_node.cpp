@@ -174,31 +174,30 @@ class SimAutopilot final : public Node {
             : nlohmann::json(nullptr);
     vehicle::report_flight(
         ctx, flight_,
-        {{"connection", cfg_.connection},
-         {"mode", OffboardRules::mode_name(rules_.mode())},
-         {"armed", rules_.armed()},
-         {"hover_thrust", hover_thrust()},
-         {"setpoints", k.setpoints},
-         {"setpoint_rate_hz", rate},
-         {"offboard_grants", k.offboard_grants},
-         {"offboard_refusals", k.offboard_refusals},
-         {"offboard_losses", k.offboard_losses},
-         {"arms", k.arms},
-         {"disarms", k.disarms},
-         {"refused_commands", k.refused_commands},
-         {"unsupported_commands", k.unsupported_commands},
-         {"fire_orders", fire_orders_},
-         {"frames", p.frames},
-         {"bad_checksum", p.bad_checksum},
-         {"unknown_id", p.unknown_id},
-         {"companion_heartbeats", companion_heartbeats_},
-         {"frames_sent", frames_sent_},
-         {"send_failures", send_failures_}},
+        ReportSection()
+            .info("connection", cfg_.connection)
+            .info("mode", OffboardRules::mode_name(rules_.mode()))
+            .info("armed", rules_.armed())
+            .quantity("hover_thrust", hover_thrust())
+            .quantity("setpoints", k.setpoints)
+            .metric("setpoint_rate_hz", rate, "Hz", Better::higher)
+            .quantity("offboard_grants", k.offboard_grants)
+            .metric("offboard_refusals", k.offboard_refusals, "", Better::lower)
+            .metric("offboard_losses", k.offboard_losses, "", Better::lower)
+            .quantity("arms", k.arms)
+            .quantity("disarms", k.disarms)
+            .metric("refused_commands", k.refused_commands, "", Better::lower)
+            .metric("unsupported_commands", k.unsupported_commands, "", Better::lower)
+            .quantity("fire_orders", fire_orders_)
+            .quantity("frames", p.frames)
+            .metric("bad_checksum", p.bad_checksum, "", Better::lower)
+            .metric("unknown_id", p.unknown_id, "", Better::lower)
+            .quantity("companion_heartbeats", companion_heartbeats_)
+            .quantity("frames_sent", frames_sent_)
+            .metric("send_failures", send_failures_, "", Better::lower),
         fmt::format("Autopilot: {} setpoints received, offboard granted {} time(s), lost {} "
                     "time(s); {} fire order(s); {} bad checksum(s).\n",
                     k.setpoints, k.offboard_grants, k.offboard_losses, fire_orders_, p.bad_checksum));
-    ctx.describe_metric(ctx.id() + ".setpoint_rate_hz", "Hz", true);
-    ctx.describe_metric(ctx.id() + ".bad_checksum", "", false);
   }
 
  private:

@@ -41,9 +41,10 @@ class StereoDepth final : public Node {
   static NodeSpec spec() {
     using M = MatcherOptions;
     ConfigSpec<Config> c;
-    c.param("algorithm", &Config::matcher, &M::algorithm).one_of({"sgbm", "bm"}).describe("OpenCV matcher");
-    c.param("mode", &Config::matcher, &M::mode)
-        .one_of({"sgbm", "hh", "sgbm_3way", "hh4"})
+    c.choice("algorithm", &Config::matcher, &M::algorithm, {{"sgbm", M::Algorithm::sgbm}, {"bm", M::Algorithm::bm}})
+        .describe("OpenCV matcher");
+    c.choice("mode", &Config::matcher, &M::mode,
+             {{"sgbm", M::Mode::sgbm}, {"hh", M::Mode::hh}, {"sgbm_3way", M::Mode::sgbm_3way}, {"hh4", M::Mode::hh4}})
         .describe("SGBM mode: 5 paths, full 8 paths, 3-way or 4-path HH");
     c.param("min_disparity", &Config::matcher, &M::min_disparity)
         .range(-256, 256)
@@ -156,20 +157,19 @@ class StereoDepth final : public Node {
            [](const Config& k) { return k.matcher.num_disparities % 16 == 0; });
     c.rule("block_size is odd", {"block_size"}, [](const Config& k) { return k.matcher.block_size % 2 == 1; });
     c.rule("block_size >= 5 for algorithm bm", {"block_size", "algorithm"},
-           [](const Config& k) { return k.matcher.algorithm != "bm" || k.matcher.block_size >= 5; });
+           [](const Config& k) { return k.matcher.algorithm != M::Algorithm::bm || k.matcher.block_size >= 5; });
     c.rule("pre_filter_cap <= 63 for algorithm bm", {"pre_filter_cap", "algorithm"},
-           [](const Config& k) { return k.matcher.algorithm != "bm" || k.matcher.pre_filter_cap <= 63; });
+           [](const Config& k) { return k.matcher.algorithm != M::Algorithm::bm || k.matcher.pre_filter_cap <= 63; });
     c.rule(
         "strips > 1 only with algorithm sgbm in mode sgbm (the other modes aggregate from below, or run in "
         "parallel already)",
-        {"strips", "algorithm", "mode"},
-        [](const Config& k) { return k.strips <= 1 || (k.matcher.algorithm == "sgbm" && k.matcher.mode == "sgbm"); });
+        {"strips", "algorithm", "mode"}, [](const Config& k) { return k.strips <= 1 || is_five_path_sgbm(k.matcher); });
     c.rule("p2 > p1 for algorithm sgbm (0 = 8 and 32 * block_size^2)", {"p2", "p1", "block_size", "algorithm"},
            [](const Config& k) {
              const int area = k.matcher.block_size * k.matcher.block_size;
              const int p1 = k.matcher.p1 > 0 ? k.matcher.p1 : 8 * area;
              const int p2 = k.matcher.p2 > 0 ? k.matcher.p2 : 32 * area;
-             return k.matcher.algorithm != "sgbm" || p2 > p1;
+             return k.matcher.algorithm != M::Algorithm::sgbm || p2 > p1;
            });
     return NodeSpec("stereo_depth", "Stereo disparity (OpenCV SGBM or BM) reprojected to a 3D point cloud")
         .details(
@@ -188,7 +188,7 @@ class StereoDepth final : public Node {
     options.num_disparities = std::max(16, (options.num_disparities / cfg_.downscale + 15) / 16 * 16);
     options.speckle_window_size /= cfg_.downscale * cfg_.downscale;
     num_disparities_ = options.num_disparities;
-    const bool sgbm_5_path = options.algorithm == "sgbm" && options.mode == "sgbm";
+    const bool sgbm_5_path = is_five_path_sgbm(options);
     const int strips = cfg_.strips > 0 ? cfg_.strips : (sgbm_5_path ? 2 : 1);
     matcher_.emplace(options, strips, (cfg_.strip_overlap_px + cfg_.downscale - 1) / cfg_.downscale);
     // Thickness and holes are in full-resolution pixels; the disparity step stays in the matched

@@ -10,7 +10,7 @@ cv::Ptr<cv::StereoMatcher> make_matcher(const MatcherOptions& o) {
   if (o.num_disparities <= 0 || o.num_disparities % 16 != 0)
     throw Error("num_disparities must be a positive multiple of 16, not " + std::to_string(o.num_disparities));
   if (o.block_size % 2 == 0) throw Error("block_size must be odd, not " + std::to_string(o.block_size));
-  if (o.algorithm == "bm") {
+  if (o.algorithm == MatcherOptions::Algorithm::bm) {
     if (o.block_size < 5) throw Error("StereoBM needs block_size >= 5");
     auto bm = cv::StereoBM::create(o.num_disparities, o.block_size);
     bm->setMinDisparity(o.min_disparity);
@@ -27,12 +27,19 @@ cv::Ptr<cv::StereoMatcher> make_matcher(const MatcherOptions& o) {
   const int p2 = o.p2 > 0 ? o.p2 : 32 * area;
   if (p2 <= p1) throw Error("SGBM needs p2 > p1");
   int mode = cv::StereoSGBM::MODE_SGBM;
-  if (o.mode == "hh")
-    mode = cv::StereoSGBM::MODE_HH;
-  else if (o.mode == "sgbm_3way")
-    mode = cv::StereoSGBM::MODE_SGBM_3WAY;
-  else if (o.mode == "hh4")
-    mode = cv::StereoSGBM::MODE_HH4;
+  switch (o.mode) {
+    case MatcherOptions::Mode::sgbm:
+      break;
+    case MatcherOptions::Mode::hh:
+      mode = cv::StereoSGBM::MODE_HH;
+      break;
+    case MatcherOptions::Mode::sgbm_3way:
+      mode = cv::StereoSGBM::MODE_SGBM_3WAY;
+      break;
+    case MatcherOptions::Mode::hh4:
+      mode = cv::StereoSGBM::MODE_HH4;
+      break;
+  }
   return cv::StereoSGBM::create(o.min_disparity, o.num_disparities, o.block_size, p1, p2, o.disp12_max_diff,
                                 o.pre_filter_cap, o.uniqueness_ratio, o.speckle_window_size, o.speckle_range, mode);
 }

@@ -12,8 +12,13 @@
 namespace kestrel::stereo {
 
 struct MatcherOptions {
-  std::string algorithm = "sgbm";  ///< sgbm or bm
-  std::string mode = "sgbm";       ///< sgbm, hh, sgbm_3way, hh4 (SGBM only)
+  /// OpenCV's semi-global matcher (the paper's) or its block matcher.
+  enum class Algorithm { sgbm, bm };
+  /// SGBM's aggregation: 5 paths, full 8 paths (HH), 3-way, or 4-path HH.
+  enum class Mode { sgbm, hh, sgbm_3way, hh4 };
+
+  Algorithm algorithm = Algorithm::sgbm;
+  Mode mode = Mode::sgbm;  ///< SGBM only
   int min_disparity = 0;
   int num_disparities = 112;  ///< multiple of 16
   int block_size = 7;         ///< odd
@@ -26,6 +31,11 @@ struct MatcherOptions {
   int pre_filter_cap = 63;
   int texture_threshold = 10;  ///< BM only
 };
+
+/// True for OpenCV's default 5-path SGBM, the only mode that can run in strips.
+inline bool is_five_path_sgbm(const MatcherOptions& o) {
+  return o.algorithm == MatcherOptions::Algorithm::sgbm && o.mode == MatcherOptions::Mode::sgbm;
+}
 
 /// Throws kestrel::Error if the options are not ones OpenCV accepts.
 cv::Ptr<cv::StereoMatcher> make_matcher(const MatcherOptions& options);

@@ -14,9 +14,7 @@ StripedMatcher::StripedMatcher(const MatcherOptions& options, int strips, int ov
     matchers_.push_back(make_matcher(options));
     return;
   }
-  if (options.algorithm != "sgbm" || options.mode != "sgbm")
-    throw Error("strips > 1 needs algorithm sgbm in mode sgbm (mode " + options.mode + ", algorithm " +
-                options.algorithm + ")");
+  if (!is_five_path_sgbm(options)) throw Error("strips > 1 needs algorithm sgbm in mode sgbm");
   MatcherOptions strip = options;
   strip.speckle_window_size = 0;  // on the merged map instead
   for (int i = 0; i < strips; ++i) matchers_.push_back(make_matcher(strip));

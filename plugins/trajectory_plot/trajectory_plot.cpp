@@ -140,10 +140,11 @@ class TrajectoryPlot final : public Node {
     md += dropped > 0 ? fmt::format("; {} later samples dropped beyond max_samples = {} per series: {}.\n", dropped,
                                     cfg_.max_samples, fmt::join(cut, ", "))
                       : ", none dropped.\n";
-    ctx.set_report_section(ctx.id(), {{"samples", kept}, {"dropped_samples", dropped}, {"series", series}}, md);
-    ctx.describe_quantity(ctx.id() + ".samples");
-    ctx.describe_metric(ctx.id() + ".dropped_samples", "", false);
-    ctx.describe_quantity(ctx.id() + ".series");
+    ctx.set_report_section(ctx.id(), ReportSection()
+                                         .quantity("samples", kept)
+                                         .metric("dropped_samples", dropped, "", Better::lower)
+                                         .quantity("series", series)
+                                         .markdown(md));
   }
 
   std::string csv() const {

@@ -71,14 +71,8 @@ Time Context::now() const { return rt_.run->executor->now(); }
 const std::string& Context::id() const { return rt_.id(); }
 Logger& Context::log() { return *rt_.logger; }
 std::mt19937_64& Context::rng() { return rt_.rng; }
-void Context::set_report_section(const std::string& key, nlohmann::json value, std::string markdown) {
-  rt_.run->report.set_section(rt_.id(), key, std::move(value), std::move(markdown));
-}
-void Context::describe_metric(const std::string& path, std::string unit, bool higher_is_better, bool by_magnitude) {
-  rt_.run->report.describe_metric(rt_.id(), path, MetricMeta{std::move(unit), higher_is_better, by_magnitude});
-}
-void Context::describe_quantity(const std::string& path, std::string unit) {
-  rt_.run->report.describe_metric(rt_.id(), path, MetricMeta{std::move(unit), std::nullopt, false});
+void Context::set_report_section(const std::string& key, const ReportSection& section) {
+  rt_.run->report.set_section(rt_.id(), key, section);
 }
 nlohmann::json Context::run_description() const { return detail::run_description(rt_.run->graph, rt_.run->options); }
 bool Context::keeps_artifacts() const { return rt_.run->report.keeps_artifacts(); }

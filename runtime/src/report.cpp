@@ -6,22 +6,19 @@
 
 namespace kestrel {
 
-void Report::set_section(const std::string& owner, const std::string& key, nlohmann::json value, std::string markdown) {
+void Report::set_section(const std::string& owner, const std::string& key, const ReportSection& section) {
+  if (key.empty() || key.find('.') != std::string::npos)
+    throw Error("'" + key + "' is not a report section key (one word, no dots)");
   std::lock_guard lock(mutex_);
   auto it = sections_.find(key);
   if (it != sections_.end() && it->second.owner != owner)
     throw Error("report section '" + key + "' already belongs to node '" + it->second.owner + "'");
-  sections_[key] = Section{owner, std::move(value), std::move(markdown)};
-}
-
-void Report::describe_metric(const std::string& owner, const std::string& path, MetricMeta meta) {
-  std::lock_guard lock(mutex_);
-  const auto dot = path.find('.');
-  const std::string section = path.substr(0, dot);
-  if (auto it = sections_.find(section); it != sections_.end() && it->second.owner != owner)
-    throw Error("metric '" + path + "' is in report section '" + section + "', which belongs to node '" +
-                it->second.owner + "'");
-  metrics_[path] = std::move(meta);
+  // A section set again replaces its readings with its values.
+  const std::string prefix = key + ".";
+  for (auto m = metrics_.lower_bound(prefix); m != metrics_.end() && m->first.starts_with(prefix);)
+    m = metrics_.erase(m);
+  for (const auto& [path, meta] : section.metrics()) metrics_[prefix + path] = meta;
+  sections_[key] = Section{owner, section.values(), section.markdown()};
 }
 
 void Report::add_artifact(const std::string& owner, const std::string& file, std::string_view bytes,

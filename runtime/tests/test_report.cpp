@@ -107,3 +107,47 @@ TEST(Report, ArtifactNamesMustBePlainFileNames) {
   report.add_artifact("a", "kestrel-owned-by-a.txt", "x", "");
   EXPECT_THROW(report.add_artifact("b", "kestrel-owned-by-a.txt", "y", ""), Error);
 }
+
+TEST(ReportSection, EachValueIsSetWithItsUnitAndDirection) {
+  ReportSection section;
+  section.metric("recall", 0.9, "", Better::higher)
+      .metric("rmse_m", {{"x", 0.1}, {"y", 0.2}}, "m", Better::lower)
+      .metric("lag_s", -0.02, "s", Better::nearer_zero)
+      .quantity("target.frames", 12)
+      .info("mode", "fast")
+      .markdown("text");
+  EXPECT_EQ(section.values()["target"]["frames"], 12);
+  EXPECT_EQ(section.values()["rmse_m"]["y"], 0.2);
+  EXPECT_EQ(section.values()["mode"], "fast");
+  EXPECT_EQ(section.metrics().at("recall"), (MetricMeta{"", true, false}));
+  EXPECT_EQ(section.metrics().at("rmse_m"), (MetricMeta{"m", false, false}));
+  EXPECT_EQ(section.metrics().at("lag_s"), (MetricMeta{"s", false, true}));
+  EXPECT_EQ(section.metrics().at("target.frames"), (MetricMeta{"", std::nullopt, false}));
+  EXPECT_FALSE(section.metrics().count("mode"));
+  EXPECT_EQ(section.markdown(), "text");
+}
+
+TEST(ReportSection, ANumberCannotBeReportedWithoutSayingHowToReadIt) {
+  ReportSection section;
+  EXPECT_THROW(section.info("count", 3), Error);
+  EXPECT_THROW(section.info("position", nlohmann::json::array({1.0, 2.0})), Error);
+  EXPECT_THROW(section.info("", "x"), Error);
+  section.quantity("count", 3);
+  EXPECT_THROW(section.quantity("count.below", 1), Error);  // a number is not a table
+}
+
+TEST(ReportSection, TheReportKeysReadingsByTheSectionAndReplacesThemWithIt) {
+  Report report;
+  ReportSection first;
+  first.metric("a", 1, "m", Better::lower).quantity("b", 2);
+  report.set_section("node", "sec", first);
+  EXPECT_EQ(report.metrics().at("sec.a").unit, "m");
+  ReportSection second;
+  second.metric("c", 1.0, "", Better::higher);
+  report.set_section("node", "sec", second);
+  EXPECT_FALSE(report.metrics().count("sec.a"));
+  EXPECT_FALSE(report.metrics().count("sec.b"));
+  EXPECT_EQ(report.metrics().at("sec.c").higher_is_better, true);
+  EXPECT_THROW(report.set_section("other", "sec", second), Error);
+  EXPECT_THROW(report.set_section("node", "a.b", second), Error);
+}

@@ -126,10 +126,11 @@ class DetectionModelNode final : public Node {
 
   void finish(Context& ctx) override {
     ctx.set_report_section(
-        ctx.id(), {{"in_view", in_view_}, {"detected", detected_}},
-        fmt::format("Modelled detections: {} of {} intruder sightings in view detected.\n", detected_, in_view_));
-    ctx.describe_quantity(ctx.id() + ".in_view");
-    ctx.describe_quantity(ctx.id() + ".detected");
+        ctx.id(), ReportSection()
+                      .quantity("in_view", in_view_)
+                      .quantity("detected", detected_)
+                      .markdown(fmt::format("Modelled detections: {} of {} intruder sightings in view detected.\n",
+                                            detected_, in_view_)));
   }
 
  private:

@@ -88,8 +88,9 @@ class OcamsEmulatorNode final : public Node {
 
   void finish(Context& ctx) override {
     if (raw_) raw_->finish();
-    nlohmann::json section = {{"frames", frames_}};
-    if (raw_) section["raw"] = {{"file", cfg_.raw_file}, {"written", raw_->written()}, {"dropped", raw_->dropped()}};
+    ReportSection section;
+    section.quantity("frames", frames_);
+    if (raw_) raw_->report(section, cfg_.raw_file);
     ctx.set_report_section(ctx.id(), section);
   }
 

@@ -73,21 +73,20 @@ class OcamsImuNode final : public Node {
 
   void finish(Context& ctx) override {
     const ImuCounters& k = stream_->counters();
-    ctx.set_report_section(ctx.id(),
-                           {{"port", cfg_.port},
-                            {"format", cfg_.format},
-                            {"samples", k.samples},
-                            {"bad_lines", k.bad_lines},
-                            {"last_bad_line", k.last_bad_line},
-                            {"replies", k.replies},
-                            {"error_replies", k.error_replies},
-                            {"hangups", k.hangups},
-                            {"silences", k.silences},
-                            {"reconnects", k.reconnects}},
-                           fmt::format("{} IMU samples from {}, {} bad line(s), {} reconnect(s).\n", k.samples,
-                                       cfg_.port, k.bad_lines, k.reconnects));
-    ctx.describe_quantity(ctx.id() + ".samples");
-    ctx.describe_metric(ctx.id() + ".bad_lines", "lines", false);
+    ctx.set_report_section(
+        ctx.id(), ReportSection()
+                      .info("port", cfg_.port)
+                      .info("format", cfg_.format)
+                      .quantity("samples", k.samples)
+                      .metric("bad_lines", k.bad_lines, "lines", Better::lower)
+                      .info("last_bad_line", k.last_bad_line)
+                      .quantity("replies", k.replies)
+                      .metric("error_replies", k.error_replies, "", Better::lower)
+                      .metric("hangups", k.hangups, "", Better::lower)
+                      .metric("silences", k.silences, "", Better::lower)
+                      .quantity("reconnects", k.reconnects)
+                      .markdown(fmt::format("{} IMU samples from {}, {} bad line(s), {} reconnect(s).\n", k.samples,
+                                            cfg_.port, k.bad_lines, k.reconnects)));
   }
 
  private:

@@ -75,16 +75,16 @@ class OcamsReplayNode final : public Node {
   }
 
   void finish(Context& ctx) override {
-    ctx.set_report_section(
-        ctx.id(),
-        {{"file", cfg_.file},
-         {"topic", reader_.topic()},
-         {"format", fmt::format("{}x{}@{}", reader_.format().width, reader_.format().height, reader_.format().fps)},
-         {"recorded", reader_.frame_count()},
-         {"published", published_},
-         {"problems", reader_.problems()}},
-        fmt::format("Replayed {} of {} raw frames from `{}`.\n", published_, reader_.frame_count(), cfg_.file));
-    ctx.describe_quantity(ctx.id() + ".published");
+    ctx.set_report_section(ctx.id(), ReportSection()
+                                         .info("file", cfg_.file)
+                                         .info("topic", reader_.topic())
+                                         .info("format", fmt::format("{}x{}@{}", reader_.format().width,
+                                                                     reader_.format().height, reader_.format().fps))
+                                         .quantity("recorded", reader_.frame_count(), "frames")
+                                         .quantity("published", published_, "frames")
+                                         .info("problems", reader_.problems())
+                                         .markdown(fmt::format("Replayed {} of {} raw frames from `{}`.\n", published_,
+                                                               reader_.frame_count(), cfg_.file)));
   }
 
  private:

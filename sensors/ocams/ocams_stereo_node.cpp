@@ -127,21 +127,20 @@ class OcamsStereoNode final : public Node {
     const StreamCounters& k = stream_->counters();
     nlohmann::json controls = nlohmann::json::object();
     for (const auto& [name, value] : stream_->applied_controls()) controls[name] = value;
-    nlohmann::json section = {{"device", device_path_},
-                              {"card", stream_->device().card},
-                              {"format", fmt::format("{}x{}@{}", cfg_.width, cfg_.height, cfg_.fps)},
-                              {"controls", controls},
-                              {"frames", k.frames},
-                              {"lost", k.lost},
-                              {"stalls", k.stalls},
-                              {"disconnects", k.disconnects},
-                              {"reconnects", k.reconnects}};
-    if (raw_) section["raw"] = {{"file", cfg_.raw_file}, {"written", raw_->written()}, {"dropped", raw_->dropped()}};
-    ctx.set_report_section(ctx.id(), section,
-                           fmt::format("{} frames from {} ({}), {} lost, {} reconnect(s).\n", k.frames, device_path_,
-                                       stream_->device().card, k.lost, k.reconnects));
-    ctx.describe_quantity(ctx.id() + ".frames");
-    ctx.describe_metric(ctx.id() + ".lost", "frames", false);
+    ReportSection section;
+    section.info("device", device_path_)
+        .info("card", stream_->device().card)
+        .info("format", fmt::format("{}x{}@{}", cfg_.width, cfg_.height, cfg_.fps))
+        .quantity("controls", controls)
+        .quantity("frames", k.frames)
+        .metric("lost", k.lost, "frames", Better::lower)
+        .metric("stalls", k.stalls, "", Better::lower)
+        .metric("disconnects", k.disconnects, "", Better::lower)
+        .quantity("reconnects", k.reconnects)
+        .markdown(fmt::format("{} frames from {} ({}), {} lost, {} reconnect(s).\n", k.frames, device_path_,
+                              stream_->device().card, k.lost, k.reconnects));
+    if (raw_) raw_->report(section, cfg_.raw_file);
+    ctx.set_report_section(ctx.id(), section);
   }
 
  private:

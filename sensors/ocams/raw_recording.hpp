@@ -11,6 +11,7 @@
 #include <kestrel/mcap/reader.hpp>
 #include <kestrel/mcap/write_queue.hpp>
 #include <kestrel/mcap/writer.hpp>
+#include <kestrel/report_section.hpp>
 #include <kestrel/time.hpp>
 #include <optional>
 #include <span>
@@ -51,6 +52,12 @@ class RawRecorder {
 
   std::uint64_t written() const { return written_; }
   std::uint64_t dropped() const { return queue_ ? queue_->dropped() : 0; }
+  /// Adds "raw": the file, frames written and dropped, to a node's report section.
+  void report(ReportSection& section, const std::string& file) const {
+    section.info("raw.file", file)
+        .quantity("raw.written", written(), "frames")
+        .metric("raw.dropped", dropped(), "frames", Better::lower);
+  }
 
  private:
   struct Item {

@@ -136,11 +136,12 @@ class SimStereo final : public Node {
   void finish(Context& ctx) override {
     if (!std::isfinite(band_near_m_)) return;
     // A band meant to stand behind the intruders: say when one flew into or beyond it.
-    ctx.set_report_section(ctx.id(), {{"frames_with_intruder_in_clutter_band", frames_inside_band_}},
-                           fmt::format("Clutter in a band from {:.2f} m: {} frames had an intruder at or beyond "
-                                       "its near edge, where clutter can hide it.\n",
-                                       band_near_m_, frames_inside_band_));
-    ctx.describe_quantity(ctx.id() + ".frames_with_intruder_in_clutter_band");
+    ctx.set_report_section(
+        ctx.id(), ReportSection()
+                      .quantity("frames_with_intruder_in_clutter_band", frames_inside_band_)
+                      .markdown(fmt::format("Clutter in a band from {:.2f} m: {} frames had an intruder at or beyond "
+                                            "its near edge, where clutter can hide it.\n",
+                                            band_near_m_, frames_inside_band_)));
     if (frames_inside_band_ > 0)
       ctx.log().warn("{} frames had an intruder at or beyond the clutter band's near edge ({:.2f} m)",
                      frames_inside_band_, band_near_m_);

@@ -129,14 +129,13 @@ class StereoImagesNode final : public Node {
   }
 
   void finish(Context& ctx) override {
-    ctx.set_report_section(
-        ctx.id(),
-        {{"source", source_.kind()},
-         {"pairs", source_.size()},
-         {"published", published_},
-         {"rectified_here", !rectifier_->passthrough()}},
-        fmt::format("Published {} of {} stereo pairs ({}).\n", published_, source_.size(), source_.kind()));
-    ctx.describe_quantity(ctx.id() + ".published");
+    ctx.set_report_section(ctx.id(), ReportSection()
+                                         .info("source", source_.kind())
+                                         .quantity("pairs", source_.size())
+                                         .quantity("published", published_)
+                                         .info("rectified_here", !rectifier_->passthrough())
+                                         .markdown(fmt::format("Published {} of {} stereo pairs ({}).\n", published_,
+                                                               source_.size(), source_.kind())));
   }
 
  private:

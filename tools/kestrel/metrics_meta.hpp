@@ -8,15 +8,12 @@
 #include <set>
 #include <string>
 
+#include "kestrel/report_section.hpp"
+
 namespace kestrel::cli {
 
-struct MetricMeta {
-  std::string unit;                      ///< "" for a ratio or a count
-  std::optional<bool> higher_is_better;  ///< unset: neither way is better (a bias, a count)
-  bool by_magnitude = false;             ///< compare |value| (a lag is as bad early as late)
-
-  bool operator==(const MetricMeta&) const = default;
-};
+/// One metric's reading, as the node that reported it declared it (kestrel/report_section.hpp).
+using MetricMeta = kestrel::MetricMeta;
 
 /// The metrics_meta of every report read, merged.
 class MetricsMeta {

@@ -22,20 +22,17 @@ void TrackerNode::process(Context& ctx) {
 
 void TrackerNode::finish(Context& ctx) {
   const TrackerCounts& c = manager_.counts();
-  const nlohmann::json section = {{"frames", c.frames},
-                                  {"empty_frames", c.empty_frames},
-                                  {"tracks_started", c.tracks_started},
-                                  {"tracks_confirmed", c.tracks_confirmed},
-                                  {"target_coasted_frames", c.target_coasted_frames}};
-  const std::string md = fmt::format(
+  ReportSection section;
+  section.quantity("frames", c.frames)
+      .metric("empty_frames", c.empty_frames, "frames", Better::lower)
+      .metric("tracks_started", c.tracks_started, "", Better::lower)
+      .metric("tracks_confirmed", c.tracks_confirmed, "", Better::lower)
+      .metric("target_coasted_frames", c.target_coasted_frames, "frames", Better::lower);
+  section.markdown(fmt::format(
       "| frames | without detections | tracks started | confirmed | target coasting |\n|---:|---:|---:|---:|---:|\n"
       "| {} | {} | {} | {} | {} |\n",
-      c.frames, c.empty_frames, c.tracks_started, c.tracks_confirmed, c.target_coasted_frames);
-  ctx.set_report_section(ctx.id(), section, md);
-  ctx.describe_metric(ctx.id() + ".empty_frames", "frames", false);
-  ctx.describe_metric(ctx.id() + ".tracks_started", "", false);
-  ctx.describe_metric(ctx.id() + ".tracks_confirmed", "", false);
-  ctx.describe_metric(ctx.id() + ".target_coasted_frames", "frames", false);
+      c.frames, c.empty_frames, c.tracks_started, c.tracks_confirmed, c.target_coasted_frames));
+  ctx.set_report_section(ctx.id(), section);
 }
 
 }  // namespace kestrel::tracking

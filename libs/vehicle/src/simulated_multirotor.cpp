@@ -79,27 +79,22 @@ void SimulatedMultirotor::account(double dt) {
   record_.max_tilt_deg = std::max(record_.max_tilt_deg, tilt * 180.0 / M_PI);
 }
 
-void report_flight(Context& ctx, const SimulatedMultirotor& flight, nlohmann::json extra,
+void report_flight(Context& ctx, const SimulatedMultirotor& flight, ReportSection section,
                    const std::string& more_summary) {
   const std::string id = ctx.id();
   const FlightRecord& r = flight.record();
   const Eigen::Vector3d& p = flight.state().position;
-  nlohmann::json section = {
-      {"flight_time_s", r.flight_time_s}, {"distance_m", r.distance_m},
-      {"max_speed_m_s", r.max_speed_m_s}, {"max_tilt_deg", r.max_tilt_deg},
-      {"touchdowns", r.touchdowns},       {"final_position_m", {{"x", p.x()}, {"y", p.y()}, {"z", p.z()}}}};
-  section.update(extra);
-  ctx.set_report_section(
-      id, std::move(section),
-      fmt::format("{:.1f} s in the air, {:.1f} m flown, top speed {:.2f} m/s, largest tilt "
-                  "{:.1f} deg, {} touchdown(s).\n{}",
-                  r.flight_time_s, r.distance_m, r.max_speed_m_s, r.max_tilt_deg, r.touchdowns, more_summary));
-  ctx.describe_quantity(id + ".flight_time_s", "s");
-  ctx.describe_quantity(id + ".distance_m", "m");
-  ctx.describe_quantity(id + ".max_speed_m_s", "m/s");
-  ctx.describe_quantity(id + ".max_tilt_deg", "deg");
-  ctx.describe_quantity(id + ".touchdowns");
-  ctx.describe_quantity(id + ".final_position_m", "m");
+  section.quantity("flight_time_s", r.flight_time_s, "s")
+      .quantity("distance_m", r.distance_m, "m")
+      .quantity("max_speed_m_s", r.max_speed_m_s, "m/s")
+      .quantity("max_tilt_deg", r.max_tilt_deg, "deg")
+      .quantity("touchdowns", r.touchdowns)
+      .quantity("final_position_m", {{"x", p.x()}, {"y", p.y()}, {"z", p.z()}}, "m")
+      .markdown(fmt::format("{:.1f} s in the air, {:.1f} m flown, top speed {:.2f} m/s, largest tilt "
+                            "{:.1f} deg, {} touchdown(s).\n{}",
+                            r.flight_time_s, r.distance_m, r.max_speed_m_s, r.max_tilt_deg, r.touchdowns,
+                            more_summary));
+  ctx.set_report_section(id, section);
 }
 
 }  // namespace kestrel::vehicle

@@ -98,13 +98,13 @@ TEST(Reprojection, AMaskKeepsOnlyItsPixels) {
   EXPECT_NEAR((*cloud)[1].x, z * (0 - 320.0) / 452.0, 1e-5);
 }
 
-class MatcherOnShiftedTexture : public ::testing::TestWithParam<std::string> {};
+class MatcherOnShiftedTexture : public ::testing::TestWithParam<MatcherOptions::Algorithm> {};
 
 TEST_P(MatcherOnShiftedTexture, RecoversTheShift) {
   MatcherOptions options;
   options.algorithm = GetParam();
   options.num_disparities = 64;
-  if (options.algorithm == "bm") options.block_size = 9;
+  if (options.algorithm == MatcherOptions::Algorithm::bm) options.block_size = 9;
   const auto matcher = make_matcher(options);
   const auto [left, right] = shifted_pair(24);
   const cv::Mat disparity = compute_disparity(*matcher, left, right);
@@ -124,7 +124,8 @@ TEST_P(MatcherOnShiftedTexture, RecoversTheShift) {
   EXPECT_NEAR(z / static_cast<double>(cloud->size()), 452.0 * 0.12 / 24, 0.02);
 }
 
-INSTANTIATE_TEST_SUITE_P(Algorithms, MatcherOnShiftedTexture, ::testing::Values("sgbm", "bm"));
+INSTANTIATE_TEST_SUITE_P(Algorithms, MatcherOnShiftedTexture,
+                         ::testing::Values(MatcherOptions::Algorithm::sgbm, MatcherOptions::Algorithm::bm));
 
 TEST(Downscale, HalvesTheCalibrationAndKeepsDepth) {
   const auto [left, right] = shifted_pair(24);

@@ -78,11 +78,11 @@ TEST(StripedMatcher, TheTopStripIsExactAndTheOthersAgreeOnAllButAFewPixels) {
 
 TEST(StripedMatcher, RefusesModesWhosePathsComeFromBelowAndBadImages) {
   MatcherOptions hh = paper_options();
-  hh.mode = "hh";
+  hh.mode = MatcherOptions::Mode::hh;
   EXPECT_THROW(StripedMatcher(hh, 2, 48), Error);
   EXPECT_NO_THROW(StripedMatcher(hh, 1, 48));
   MatcherOptions bm = paper_options();
-  bm.algorithm = "bm";
+  bm.algorithm = MatcherOptions::Algorithm::bm;
   bm.block_size = 9;
   EXPECT_THROW(StripedMatcher(bm, 2, 48), Error);
   EXPECT_THROW(StripedMatcher(paper_options(), 0, 48), Error);

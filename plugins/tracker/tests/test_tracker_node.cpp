@@ -74,7 +74,7 @@ class TracksProbe final : public Node {
                           {"age", t.age},
                           {"hits", t.hits},
                           {"state", std::vector<double>(t.state.data(), t.state.data() + t.state.size())}});
-    ctx.set_report_section(ctx.id(), {{"tracks", tracks}, {"targets", targets_}});
+    ctx.set_report_section(ctx.id(), ReportSection().quantity("tracks", tracks).quantity("targets", targets_));
   }
 
  private:

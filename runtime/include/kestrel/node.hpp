@@ -137,14 +137,9 @@ class Context {
   /// This node's random generator, seeded from NodeInit::seed(). Use it, not a private one, so
   /// that lockstep runs reproduce.
   std::mt19937_64& rng();
-  /// The run report. Sections set here are owned by this node.
-  void set_report_section(const std::string& key, nlohmann::json value, std::string markdown = {});
-  /// Says how to read a metric of this node's sections: `path` is its dotted key in report.json
-  /// ("detection.recall"). sweep, ab and plot compare runs with it.
-  void describe_metric(const std::string& path, std::string unit, bool higher_is_better, bool by_magnitude = false);
-  /// Says a metric has a unit but no better direction (a count of frames or of objects): report.json
-  /// gives its unit and no "higher_is_better", and sweep and ab give it no verdict.
-  void describe_quantity(const std::string& path, std::string unit = {});
+  /// Sets the run report's section `key`, owned by this node from then on: its values, the unit
+  /// and direction of each metric in it (sweep, ab and plot compare runs with them), its text.
+  void set_report_section(const std::string& key, const ReportSection& section);
   /// What is running, as report.json's `kestrel_version` and `graph` record it: {"kestrel_version",
   /// "graph": {"file", "name", "executor", "clock", "seed", "duration_s", "resolved"}}.
   nlohmann::json run_description() const;

@@ -11,16 +11,9 @@
 #include <string_view>
 #include <vector>
 
-namespace kestrel {
+#include "kestrel/report_section.hpp"
 
-/// How to read one metric: its unit, and which way is better (none for a count that is neither
-/// good nor bad, such as the number of frames scored). `by_magnitude`: smaller |value| is better
-/// whatever the sign (a lag, a bias).
-struct MetricMeta {
-  std::string unit;
-  std::optional<bool> higher_is_better = true;
-  bool by_magnitude = false;
-};
+namespace kestrel {
 
 /// A file that belongs to the report: a plot, a snapshot, a table.
 struct Artifact {
@@ -31,14 +24,11 @@ struct Artifact {
 
 class Report {
  public:
-  /// Sets the top-level section `key` of report.json (e.g. "detection"). `markdown`, if given,
-  /// is the section's text in report.md; otherwise the JSON is rendered as a table. A key can be
+  /// Sets the top-level section `key` of report.json (e.g. "detection") and records how to read
+  /// each of its metrics as "key.path" (report.json's "metrics_meta"). The section's markdown, if
+  /// any, is its text in report.md; otherwise the values are rendered as a table. A key can be
   /// owned by one node only; a second owner is an error.
-  void set_section(const std::string& owner, const std::string& key, nlohmann::json value, std::string markdown = {});
-
-  /// Declares the unit and direction of the metric at dotted path `path` ("detection.recall").
-  /// report.json lists them under "metrics_meta"; sweep, ab and plot read them from there.
-  void describe_metric(const std::string& owner, const std::string& path, MetricMeta meta);
+  void set_section(const std::string& owner, const std::string& key, const ReportSection& section);
 
   /// Writes `bytes` as `file` in the report folder and lists it in the report (images are shown
   /// in report.md). Does nothing when the run has no report folder. Throws kestrel::Error if the

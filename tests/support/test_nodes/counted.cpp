@@ -38,7 +38,9 @@ class CountedSource final : public Node {
   void finish(Context& ctx) override {
     // Every node has processed its last message by now: copies made anywhere in this run count.
     ctx.set_report_section(ctx.id(),
-                           {{"addresses", addresses_}, {"copies", Counted::copies().load() - copies_at_start_}});
+                           ReportSection()
+                               .quantity("addresses", addresses_)
+                               .metric("copies", Counted::copies().load() - copies_at_start_, "", Better::lower));
   }
 
  private:
@@ -76,7 +78,7 @@ class CountedSink final : public Node {
     addresses_.push_back(address(m.get()));
   }
   void finish(Context& ctx) override {
-    ctx.set_report_section(ctx.id(), {{"indices", indices_}, {"addresses", addresses_}});
+    ctx.set_report_section(ctx.id(), ReportSection().quantity("indices", indices_).quantity("addresses", addresses_));
   }
 
  private:
@@ -114,10 +116,11 @@ class CountedJoin final : public Node {
     ctx.publish(kOut, m);
   }
   void finish(Context& ctx) override {
-    auto json = [](const Seen& seen) {
-      return nlohmann::json{{"indices", seen.indices}, {"addresses", seen.addresses}};
-    };
-    ctx.set_report_section(ctx.id(), {{"a", json(a_)}, {"b", json(b_)}, {"c", json(c_)}});
+    ReportSection section;
+    for (const auto& [name, seen] : {std::pair{"a", &a_}, {"b", &b_}, {"c", &c_}})
+      section.quantity(std::string(name) + ".indices", seen->indices)
+          .quantity(std::string(name) + ".addresses", seen->addresses);
+    ctx.set_report_section(ctx.id(), section);
   }
 
  private:

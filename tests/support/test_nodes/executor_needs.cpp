@@ -20,7 +20,7 @@ class NeedsExecutor final : public Node {
   }
   explicit NeedsExecutor(NodeInit&) {}
   void process(Context&) override { ++count_; }
-  void finish(Context& ctx) override { ctx.set_report_section(ctx.id(), {{"count", count_}}); }
+  void finish(Context& ctx) override { ctx.set_report_section(ctx.id(), ReportSection().quantity("count", count_)); }
 
  private:
   std::int64_t count_ = 0;

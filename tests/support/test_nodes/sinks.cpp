@@ -31,10 +31,12 @@ class Collector final : public Node {
     }
   }
   void finish(Context& ctx) override {
-    ctx.set_report_section(
-        ctx.id(),
-        {{"count", count_}, {"checksum", checksum_}, {"values", values_}, {"indices", indices_}, {"times_s", stamps_}});
-    ctx.describe_metric(ctx.id() + ".count", "messages", true);
+    ctx.set_report_section(ctx.id(), ReportSection()
+                                         .metric("count", count_, "messages", Better::higher)
+                                         .quantity("checksum", checksum_)
+                                         .quantity("values", values_)
+                                         .quantity("indices", indices_)
+                                         .quantity("times_s", stamps_, "s"));
     if (ctx.keeps_artifacts()) {
       std::string csv = "index,value\n";
       for (std::size_t i = 0; i < values_.size(); ++i)
@@ -68,7 +70,7 @@ class TapLog final : public Node {
     const Envelope& e = ctx.envelope(kIn.name);
     log_.push_back(std::string(e.source_node) + "." + std::string(e.source_port) + ":" + std::string(e.type));
   }
-  void finish(Context& ctx) override { ctx.set_report_section(ctx.id(), {{"log", log_}}); }
+  void finish(Context& ctx) override { ctx.set_report_section(ctx.id(), ReportSection().info("log", log_)); }
 
  private:
   std::vector<std::string> log_;
@@ -90,10 +92,12 @@ class BlobSink final : public Node {
     latency_.record(std::chrono::steady_clock::now().time_since_epoch().count() - blob->created_ns);
   }
   void finish(Context& ctx) override {
-    ctx.set_report_section(ctx.id(),
-                           {{"count", count_},
-                            {"bytes_copied", bytes_copied_},
-                            {"latency_ns", {{"p50", latency_.quantile(0.5)}, {"p99", latency_.quantile(0.99)}}}});
+    ctx.set_report_section(
+        ctx.id(), ReportSection()
+                      .quantity("count", count_)
+                      .metric("bytes_copied", bytes_copied_, "B", Better::lower)
+                      .metric("latency_ns", {{"p50", latency_.quantile(0.5)}, {"p99", latency_.quantile(0.99)}}, "ns",
+                              Better::lower));
   }
 
  private:

@@ -1,28 +1,19 @@
 #pragma once
-// An evaluator's section of the run report: its values, its Markdown, and how to read each
-// metric in it (unit and direction). Built by a pure function that tests can call, then handed to
-// the run by publish_section.
+// Helpers for an evaluator's section of the run report (kestrel::ReportSection), which a pure
+// function builds so that tests can call it, and the node hands to Context::set_report_section.
 #include <fmt/format.h>
 
 #include <cstdint>
-#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
-#include <vector>
 
-#include "kestrel/node.hpp"
-#include "kestrel/report.hpp"
+#include "kestrel/report_section.hpp"
 
 namespace kestrel::evaluation {
 
-struct ReportSection {
-  nlohmann::json values = nlohmann::json::object();
-  std::string markdown;
-  /// Keyed by the path inside the section ("rmse_m"); an entry covers the keys below it too
-  /// ("rmse_m.x").
-  std::map<std::string, MetricMeta> metrics;
-};
+using kestrel::Better;
+using kestrel::ReportSection;
 
 /// A metric that may be undefined: the number, or null.
 inline nlohmann::json number_or_null(const std::optional<double>& v) {
@@ -38,46 +29,11 @@ inline std::string text_or_undefined(const std::optional<double>& v, fmt::format
 /// Adds what the evaluator could not score for want of a partner (TruthPairing's counts): a lossy
 /// chain shows here.
 inline void add_unpaired(ReportSection& section, std::uint64_t messages, std::uint64_t truths) {
-  section.values["unpaired"] = {{"messages", messages}, {"truths", truths}};
-  section.metrics["unpaired"] = MetricMeta{"", false, false};
-  section.markdown += fmt::format(
+  section.metric("unpaired", {{"messages", messages}, {"truths", truths}}, "", Better::lower);
+  section.append_markdown(fmt::format(
       "\nNot scored for want of a partner: {} message(s) without ground truth, {} ground truth frame(s) without a "
       "message.\n",
-      messages, truths);
-}
-
-/// Sets the report section `key` and describes each of its metrics as "key.path".
-inline void publish_section(Context& ctx, const std::string& key, const ReportSection& section) {
-  ctx.set_report_section(key, section.values, section.markdown);
-  for (const auto& [path, meta] : section.metrics) {
-    if (meta.higher_is_better)
-      ctx.describe_metric(key + "." + path, meta.unit, *meta.higher_is_better, meta.by_magnitude);
-    else
-      ctx.describe_quantity(key + "." + path, meta.unit);
-  }
-}
-
-/// The leaf keys of the section's values (dotted paths) that no metric entry covers. Empty when
-/// every reported value says how to read it.
-inline std::vector<std::string> undescribed_metrics(const ReportSection& section) {
-  std::vector<std::string> missing;
-  const auto covered = [&](std::string path) {
-    for (;;) {
-      if (section.metrics.count(path)) return true;
-      const auto dot = path.rfind('.');
-      if (dot == std::string::npos) return false;
-      path.resize(dot);
-    }
-  };
-  const auto walk = [&](const auto& self, const nlohmann::json& value, const std::string& path) -> void {
-    if (value.is_object()) {
-      for (const auto& [k, v] : value.items()) self(self, v, path.empty() ? k : path + "." + k);
-    } else if (!covered(path)) {
-      missing.push_back(path);
-    }
-  };
-  walk(walk, section.values, "");
-  return missing;
+      messages, truths));
 }
 
 }  // namespace kestrel::evaluation

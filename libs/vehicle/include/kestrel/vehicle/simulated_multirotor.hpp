@@ -106,8 +106,9 @@ class SimulatedMultirotor {
 };
 
 /// The node's report section for a flight (flight_time_s, distance_m, max_speed_m_s,
-/// max_tilt_deg, touchdowns, final_position_m) plus `extra` keys, with a line of summary.
-void report_flight(Context& ctx, const SimulatedMultirotor& flight, nlohmann::json extra = nlohmann::json::object(),
+/// max_tilt_deg, touchdowns, final_position_m) added to the node's own `section`, with a line of
+/// summary followed by `more_summary`.
+void report_flight(Context& ctx, const SimulatedMultirotor& flight, ReportSection section = {},
                    const std::string& more_summary = "");
 
 }  // namespace kestrel::vehicle
