@@ -1,10 +1,16 @@
 #!/usr/bin/env python3
 """The capture benchmark's two halves around `kestrel sweep --cases`.
 
-  capture_benchmark.py scenarios N SEED0 FILE   draws N random engagements (seeds SEED0..) as a
-                                                cases file: one row per run, a column per --set
+  capture_benchmark.py scenarios N SEED0 FILE [--bands LO:HI,...] [--shapes S,...]
+                                                draws N random engagements per speed band (seeds
+                                                SEED0.. for the first band, SEED0 + 100000.. for
+                                                the second, ...) as a cases file: one row per run,
+                                                a column per --set
   capture_benchmark.py summarise OUTDIR LABEL SWEEPDIR...
                                                 reads the runs' reports and writes OUTDIR/capture.json
+  capture_benchmark.py curve FILE.csv LAW=SUMMARY...
+                                                the capture rate per speed band and law, with its
+                                                Wilson 95 % bounds, as a CSV for `kestrel plot`
   capture_benchmark.py combine FILE MAIN [RENDERED]
                                                 the main summary, with the rendered subset's under
                                                 "rendered", as FILE
@@ -15,6 +21,12 @@ Each scenario is drawn from its own seed, so scenario k is the same whatever N i
 for the detection-level and the rendered camera. The ranges are those of docs/control.md
 ("The capture benchmark"): the intruder flies a figure-8, a line back and forth or random
 manoeuvres, 4 to 9 m ahead of the hunter's start, at up to 3 m/s, in a wind of up to 3 m/s.
+
+A speed band LO:HI draws the intruder's top speed in [max(LO, 0.5), HI] m/s; the default band,
+0:3, is the benchmark above, seed for seed. Above 3 m/s an intruder also flies as a multirotor
+can: it turns and brakes at 4 to 8 m/s^2 at most, so its figure-8, its line and its random box
+grow with its speed (a line long enough to reach its top speed, a figure-8 whose curvature it
+can fly, a box as wide as its turns).
 """
 import csv
 import json
@@ -25,17 +37,37 @@ import statistics
 import sys
 
 SHAPES = ["figure8", "line", "random"]
-MAX_INTRUDER_SPEED = 3.0  # m/s
+MAX_INTRUDER_SPEED = 3.0  # m/s: the default band's top, and where the agile scaling starts
 MAX_WIND = 3.0  # m/s
+BAND_SEED_STRIDE = 100000  # band b's seeds start at SEED0 + b * BAND_SEED_STRIDE
+
+
+def parse_bands(text):
+    """'0:3,3:6' -> [(0.0, 3.0), (3.0, 6.0)]"""
+    bands = []
+    for item in text.split(","):
+        lo, sep, hi = item.partition(":")
+        if not sep:
+            raise SystemExit(f"bad band '{item}': expected LO:HI in m/s")
+        lo, hi = float(lo), float(hi)
+        if not 0.0 <= lo < hi:
+            raise SystemExit(f"bad band '{item}': expected 0 <= LO < HI")
+        bands.append((lo, hi))
+    return bands
+
+
+def band_label(band):
+    return f"{band[0]:g}:{band[1]:g}"
 
 
 def vec(v):
     return "[" + ", ".join(f"{x:.3f}" for x in v) + "]"
 
 
-def scenario(seed):
+def scenario(seed, band=(0.0, MAX_INTRUDER_SPEED), shapes=SHAPES):
     rng = random.Random(seed * 7919 + 17)
-    shape = SHAPES[(seed - 1) % len(SHAPES)]  # each shape as often as the others
+    shape = shapes[(seed - 1) % len(shapes)]  # each shape as often as the others
+    speed_lo, speed_hi = max(band[0], 0.5), band[1]
     distance = rng.uniform(4.0, 9.0)  # from the hunter's start to the intruder's path
     lateral = rng.uniform(-1.5, 1.5)
     height = rng.uniform(2.0, 3.0)  # centre of the path; it stays above the height gate
@@ -45,7 +77,13 @@ def scenario(seed):
          "hunter.gust_std_m_s": f"{0.2 * wind_speed:.3f}"}
     if shape == "figure8":
         half_width, half_height = rng.uniform(0.5, 2.0), rng.uniform(0.25, 0.8)
-        top_speed = rng.uniform(0.5, MAX_INTRUDER_SPEED)
+        top_speed = rng.uniform(speed_lo, speed_hi)
+        if top_speed > MAX_INTRUDER_SPEED:
+            # Its acceleration, at most w^2 max(hw, 4 hh), within what it can fly: scaled up.
+            accel = rng.uniform(4.0, 8.0)
+            scale = top_speed**2 * max(half_width, 4.0 * half_height) / (
+                accel * (half_width**2 + 4.0 * half_height**2))
+            half_width, half_height = half_width * max(1.0, scale), half_height * max(1.0, scale)
         # The Lissajous curve is fastest at its centre, where |v| = w sqrt(hw^2 + 4 hh^2).
         period = 2.0 * math.pi * math.hypot(half_width, 2.0 * half_height) / top_speed
         s.update({"intruder.distance_m": f"{distance:.3f}", "intruder.camera_position_m": vec([0.0, lateral, height]),
@@ -54,23 +92,34 @@ def scenario(seed):
     elif shape == "line":
         length, climb = rng.uniform(3.0, 6.0), rng.uniform(-0.5, 0.5)
         heading = rng.uniform(-0.5, 0.5)  # rad off a pure crossing
+        speed, line_accel = rng.uniform(speed_lo, speed_hi), rng.uniform(2.0, 6.0)
+        if speed > MAX_INTRUDER_SPEED:
+            line_accel = rng.uniform(4.0, 8.0)
+            length = max(length, 1.5 * speed**2 / line_accel)  # it reaches its top speed
         dx, dy = math.sin(heading) * length / 2.0, math.cos(heading) * length / 2.0
         s.update({"intruder.line_start_m": vec([distance - dx, lateral - dy, height - climb / 2.0]),
                   "intruder.line_end_m": vec([distance + dx, lateral + dy, height + climb / 2.0]),
-                  "intruder.speed_m_s": f"{rng.uniform(0.5, MAX_INTRUDER_SPEED):.3f}", "intruder.at_end": "repeat",
+                  "intruder.speed_m_s": f"{speed:.3f}", "intruder.at_end": "repeat",
                   # It brakes and turns as a multirotor can: 2 to 6 m/s^2 (a small quadrotor's
                   # few m/s^2 up to a sporty one's).
-                  "intruder.line_acceleration_m_s2": f"{rng.uniform(2.0, 6.0):.3f}"})
+                  "intruder.line_acceleration_m_s2": f"{line_accel:.3f}"})
     else:
+        extent = [rng.uniform(0.3, 1.0), rng.uniform(0.5, 2.0), rng.uniform(0.2, 0.6)]
+        speed = rng.uniform(speed_lo, speed_hi)
+        if speed > MAX_INTRUDER_SPEED:
+            accel = rng.uniform(4.0, 8.0)
+            turn = speed**2 / accel  # the radius of its tightest turn
+            extent = [max(extent[0], 0.5 * turn), max(extent[1], turn), max(extent[2], 0.25 * turn)]
+            s["intruder.max_acceleration_m_s2"] = f"{accel:.3f}"
         s.update({"intruder.random_centre_m": vec([distance, lateral, height]),
-                  "intruder.random_half_extent_m": vec([rng.uniform(0.3, 1.0), rng.uniform(0.5, 2.0),
-                                                        rng.uniform(0.2, 0.6)]),
-                  "intruder.max_speed_m_s": f"{rng.uniform(0.5, MAX_INTRUDER_SPEED):.3f}"})
+                  "intruder.random_half_extent_m": vec(extent),
+                  "intruder.max_speed_m_s": f"{speed:.3f}"})
     return s
 
 
-def write_scenarios(n, seed0, path):
-    rows = [scenario(seed0 + k) for k in range(n)]
+def write_scenarios(n, seed0, path, bands=((0.0, MAX_INTRUDER_SPEED),), shapes=SHAPES):
+    rows = [scenario(seed0 + b * BAND_SEED_STRIDE + k, band, shapes)
+            for b, band in enumerate(bands) for k in range(n)]
     keys = ["seed"] + sorted({k for r in rows for k in r if k != "seed"})
     with open(path, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=keys, restval="")
@@ -100,7 +149,36 @@ def failure_cause(r):
     return "aligned, but never held the aim long enough to fire"
 
 
-def summarise(out, label, sweep_dirs):
+def wilson_bounds(successes, n, z=1.959964):
+    """The Wilson score interval of a rate (95 % by default): honest at 0 %, 100 % and small n."""
+    if n == 0:
+        return None, None
+    p = successes / n
+    centre = (p + z * z / (2 * n)) / (1 + z * z / n)
+    half = z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / (1 + z * z / n)
+    return max(0.0, centre - half), min(1.0, centre + half)
+
+
+def group_figures(runs):
+    """Capture figures of a group of runs (a band, a shape)."""
+    caught = [x for x in runs if x["captured"]]
+    low, high = wilson_bounds(len(caught), len(runs))
+    times = [x["time_to_capture_s"] for x in caught]
+    nets = [x["fire_count"] for x in runs if x.get("fire_count") is not None]
+    seen = [x["first_seen_range_m"] for x in runs if x.get("first_seen_range_m") is not None]
+    return {"runs": len(runs), "captured": len(caught),
+            "rate": len(caught) / len(runs) if runs else None, "wilson_low": low, "wilson_high": high,
+            "first_shot_rate": sum(bool(x.get("first_shot_captured")) for x in runs) / len(runs) if runs else None,
+            "median_time_to_capture_s": statistics.median(times) if times else None,
+            "median_nets_used": statistics.median(nets) if nets else None,
+            "first_seen_closer_than_4m": sum(r < 4.0 for r in seen) / len(seen) if seen else None}
+
+
+def shape_order(shape):
+    return SHAPES.index(shape) if shape in SHAPES else len(SHAPES)
+
+
+def summarise(out, label, sweep_dirs, bands=None, seed0=1):
     runs = []
     for sweep in sweep_dirs:
         runs_dir = os.path.join(sweep, "runs")
@@ -114,8 +192,11 @@ def summarise(out, label, sweep_dirs):
             c = r.get("control", {})
             shape = r["graph"]["resolved"]["nodes"]["intruder"]["params"]["shape"]
             runs.append({"seed": seed, "shape": shape, "captured": c.get("captured") is True,
+                         "first_shot_captured": c.get("first_shot_captured") is True,
                          "time_to_capture_s": c.get("time_to_capture_s"), "aim_rmse_m": c.get("aim_rmse_m"),
-                         "fire_count": c.get("fire_count"), "cause": None if c.get("captured") else failure_cause(r)})
+                         "fire_count": c.get("fire_count"),
+                         "first_seen_range_m": r.get("aim", {}).get("first_seen_range_m"),
+                         "cause": None if c.get("captured") else failure_cause(r)})
     runs.sort(key=lambda x: x["seed"])
     caught = [x for x in runs if x["captured"]]
     times = [x["time_to_capture_s"] for x in caught]
@@ -126,10 +207,18 @@ def summarise(out, label, sweep_dirs):
         "median_time_to_capture_s": statistics.median(times) if times else None,
         "aim_rmse_m": statistics.median(rmses) if rmses else None,
         "failures": [{"seed": x["seed"], "cause": x["cause"]} for x in runs if not x["captured"]],
+        "first_shot_rate": group_figures(runs)["first_shot_rate"],
+        "first_seen_closer_than_4m": group_figures(runs)["first_seen_closer_than_4m"],
         "by_shape": {s: {"runs": sum(x["shape"] == s for x in runs),
-                         "captured": sum(x["shape"] == s and x["captured"] for x in runs)} for s in SHAPES},
+                         "captured": sum(x["shape"] == s and x["captured"] for x in runs)}
+                     for s in sorted({x["shape"] for x in runs}, key=shape_order)},
         "per_run": runs,
     }
+    if bands:
+        for x in runs:
+            x["band"] = band_label(bands[(x["seed"] - seed0) // BAND_SEED_STRIDE])
+        summary["by_band"] = {band_label(b): group_figures([x for x in runs if x["band"] == band_label(b)])
+                              for b in bands}
     os.makedirs(out, exist_ok=True)
     with open(os.path.join(out, "capture.json"), "w") as f:
         json.dump(summary, f, indent=2)
@@ -141,12 +230,25 @@ def markdown(summaries, scenarios_file):
     lines = ["# Capture benchmark", "",
              f"Random engagements drawn by scripts/capture-benchmark (cases: {scenarios_file}); a run is a capture "
              "when the net catches the intruder within the run.", "",
-             "| camera | runs | captured | success rate | median time to capture [s] | median aim RMSE [m] |",
-             "|---|---:|---:|---:|---:|---:|"]
+             "| camera | runs | captured | success rate | first shot | median time to capture [s] | median aim RMSE [m] |",
+             "|---|---:|---:|---:|---:|---:|---:|"]
     for s in summaries:
         captured = s["runs"] - len(s["failures"])
         lines.append(f"| {s['camera']} | {s['runs']} | {captured} | {f(s['success_rate'], '.1%')} | "
+                     f"{f(s.get('first_shot_rate'), '.1%')} | "
                      f"{f(s['median_time_to_capture_s'], '.1f')} | {f(s['aim_rmse_m'], '.2f')} |")
+    if any("by_band" in s for s in summaries):
+        lines += ["", "## By intruder top speed", "",
+                  "Rates with their Wilson 95 % interval; first shot: the first net caught it; seen < 4 m: the target "
+                  "was first seen closer than 4 m.", "",
+                  "| camera | band [m/s] | runs | captured | rate | 95 % interval | first shot | median time [s] | "
+                  "median nets | seen < 4 m |", "|---|---|---:|---:|---:|---|---:|---:|---:|---:|"]
+        for s in summaries:
+            for band, b in s.get("by_band", {}).items():
+                lines.append(f"| {s['camera']} | {band} | {b['runs']} | {b['captured']} | {f(b['rate'], '.1%')} | "
+                             f"{f(b['wilson_low'], '.1%')} to {f(b['wilson_high'], '.1%')} | "
+                             f"{f(b['first_shot_rate'], '.1%')} | {f(b['median_time_to_capture_s'], '.1f')} | "
+                             f"{f(b['median_nets_used'], 'g')} | {f(b['first_seen_closer_than_4m'], '.0%')} |")
     for s in summaries:
         lines += ["", f"## {s['camera']}: by shape", "", "| shape | runs | captured |", "|---|---:|---:|"]
         for shape, v in s["by_shape"].items():
@@ -156,22 +258,67 @@ def markdown(summaries, scenarios_file):
     return "\n".join(lines) + "\n"
 
 
+def write_curve(path, laws):
+    """One row per band: its mid speed, and each law's rate with its Wilson bounds."""
+    bands = list(next(iter(laws.values()))["by_band"].keys())
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["band", "speed_m_s"] + [f"{law}{suffix}" for law in laws for suffix in ("", "_low", "_high")])
+        for band in bands:
+            lo, hi = (float(v) for v in band.split(":"))
+            row = [band, (max(lo, 0.5) + hi) / 2.0]
+            for summary in laws.values():
+                b = summary["by_band"][band]
+                row += [b["rate"], b["wilson_low"], b["wilson_high"]]
+            w.writerow(row)
+
+
 def main(argv):
-    if len(argv) == 5 and argv[1] == "scenarios":
-        write_scenarios(int(argv[2]), int(argv[3]), argv[4])
-    elif len(argv) >= 4 and argv[1] == "markdown":
-        summaries = [json.load(open(p)) for p in argv[3:]]
-        sys.stdout.write(markdown(summaries, argv[2]))
-    elif len(argv) in (4, 5) and argv[1] == "combine":
-        combined = json.load(open(argv[3]))
-        if len(argv) == 5:
-            combined["rendered"] = json.load(open(argv[4]))
-        with open(argv[2], "w") as f:
+    import argparse
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = parser.add_subparsers(dest="command", required=True)
+    p = sub.add_parser("scenarios")
+    p.add_argument("n", type=int)
+    p.add_argument("seed0", type=int)
+    p.add_argument("file")
+    p.add_argument("--bands", default=None)
+    p.add_argument("--shapes", default=",".join(SHAPES))
+    p = sub.add_parser("summarise")
+    p.add_argument("out")
+    p.add_argument("label")
+    p.add_argument("sweep_dirs", nargs="+")
+    p.add_argument("--bands", default=None)
+    p.add_argument("--seed0", type=int, default=1)
+    p = sub.add_parser("combine")
+    p.add_argument("file")
+    p.add_argument("main")
+    p.add_argument("rendered", nargs="?")
+    p.add_argument("--law", action="append", default=[], help="LAW=SUMMARY: a guidance law's summary")
+    p = sub.add_parser("markdown")
+    p.add_argument("cases")
+    p.add_argument("summaries", nargs="+")
+    p = sub.add_parser("curve")
+    p.add_argument("file")
+    p.add_argument("laws", nargs="+", help="LAW=SUMMARY")
+    a = parser.parse_args(argv[1:])
+    if a.command == "scenarios":
+        bands = parse_bands(a.bands) if a.bands else [(0.0, MAX_INTRUDER_SPEED)]
+        write_scenarios(a.n, a.seed0, a.file, bands, a.shapes.split(","))
+    elif a.command == "summarise":
+        summarise(a.out, a.label, a.sweep_dirs, parse_bands(a.bands) if a.bands else None, a.seed0)
+    elif a.command == "combine":
+        combined = json.load(open(a.main))
+        if a.rendered:
+            combined["rendered"] = json.load(open(a.rendered))
+        if a.law:
+            combined["by_guidance"] = {law: json.load(open(path))
+                                       for law, _, path in (item.partition("=") for item in a.law)}
+        with open(a.file, "w") as f:
             json.dump(combined, f, indent=2)
-    elif len(argv) >= 5 and argv[1] == "summarise":
-        summarise(argv[2], argv[3], argv[4:])
-    else:
-        sys.exit(__doc__)
+    elif a.command == "markdown":
+        sys.stdout.write(markdown([json.load(open(p)) for p in a.summaries], a.cases))
+    elif a.command == "curve":
+        write_curve(a.file, {law: json.load(open(path)) for law, _, path in (item.partition("=") for item in a.laws)})
 
 
 if __name__ == "__main__":

@@ -1,13 +1,16 @@
 // The `aim_planner` node: from the tracker's selected target (camera frame) and the hunter's
 // odometry to the setpoint that puts the target where the net opens, x_E^d, and the order to fire
-// once the aim has held there. Takes off to takeoff_altitude_m and waits while nothing is
-// tracked; after losing the target it flies on towards where it was for target_timeout_s, then
-// holds (or searches by turning slowly) until the tracker selects a target again. A selected
+// once the aim has held there. A guidance component (kestrel/guidance/guidance.hpp) chooses how
+// the hunter closes in; every law hands over to the same terminal phase, the paper's aim law. Takes off to
+// takeoff_altitude_m and waits while nothing is tracked; after losing the target it flies on towards where it was for
+// target_timeout_s, then holds (or searches by turning slowly) until the tracker selects a target again. A selected
 // track near the ground is clutter, never a target.
 #include <fmt/format.h>
 
 #include <cmath>
 #include <kestrel/geometry/frames.hpp>
+#include <kestrel/guidance/aim_reference.hpp>
+#include <kestrel/guidance/guidance.hpp>
 #include <kestrel/messages/net_fire.hpp>
 #include <kestrel/messages/tracks.hpp>
 #include <kestrel/messages/trajectory_setpoint.hpp>
@@ -16,9 +19,13 @@
 #include <kestrel/tracking/kalman_filter.hpp>
 #include <optional>
 
-#include "aim_law.hpp"
+#include "fire_decision.hpp"
 
 namespace kestrel::aim {
+
+using guidance::aim_pose;
+using guidance::AimPose;
+using guidance::AimReference;
 
 struct AimPlannerConfig {
   enum class WhenLost { hold, search, back_off };
@@ -44,6 +51,7 @@ struct AimPlannerConfig {
   double net_flight_time_s = 0.4;
   double net_open_s = 0.3;
   double cooldown_s = 3.0;
+  ComponentConfig guidance;
 };
 
 class AimPlannerNode final : public Node {
@@ -142,6 +150,10 @@ class AimPlannerNode final : public Node {
         .range(0.0, 60.0)
         .describe("how long the aim must hold before firing");
     c.param("cooldown_s", &C::cooldown_s).with_unit("s").range(0.0, 3600.0).describe("least time between two shots");
+    c.component("guidance", &C::guidance, "guidance", "hold_aim")
+        .describe(
+            "how the hunter closes on the target before the terminal phase aligns the net: hold_aim (the paper's: "
+            "terminal from the start), pursuit, pn, predictive");
     c.rule("min_altitude_m <= takeoff_altitude_m", {"min_altitude_m", "takeoff_altitude_m"},
            [](const C& k) { return k.min_altitude_m <= k.takeoff_altitude_m; });
     return NodeSpec("aim_planner", "Aims the hunter so the target sits where the net opens, and fires")
@@ -161,7 +173,8 @@ class AimPlannerNode final : public Node {
         .config(std::move(c));
   }
 
-  explicit AimPlannerNode(NodeInit& init) : cfg_(init.config<AimPlannerConfig>()) {}
+  explicit AimPlannerNode(NodeInit& init)
+      : cfg_(init.config<AimPlannerConfig>()), guidance_(init.make_component<guidance::Guidance>("guidance")) {}
 
   void process(Context& ctx) override {
     const auto tracks = ctx.get(kTracks);
@@ -197,9 +210,11 @@ class AimPlannerNode final : public Node {
       // filter in the camera frame lags whenever the camera turns.
       const Eigen::Vector3d in_camera = target->detection.allFinite() ? target->detection : target->position();
       const Eigen::Vector3d intruder = camera.to_world(in_camera);
+      if (!first_seen_range_) first_seen_range_ = in_camera.norm();
       if (!estimate_ || target->id != target_id_) {
         estimate_.emplace(intruder, tracking::KalmanConfig{cfg_.target_q, cfg_.target_r, 1.0});
         target_id_ = target->id;
+        guidance_->reset();
       } else {
         estimate_->update(intruder);
       }
@@ -220,7 +235,13 @@ class AimPlannerNode final : public Node {
     }
 
     if (goal_ && target) {
-      reference_->advance(*goal_, goal_velocity_, dt);
+      const guidance::GuidanceCommand command = guidance_->command(engagement(dt));
+      if (command.terminal) {
+        ++terminal_frames_;
+        reference_->advance(*goal_, goal_velocity_, dt);
+      } else {
+        reference_->steer(command.velocity, command.yaw, dt);
+      }
     } else if (goal_ && t - last_seen_ <= cfg_.target_timeout_s) {
       // A short loss: on towards the last aim pose, without feeding forward a velocity nobody sees.
       reference_->advance(*goal_, Eigen::Vector3d::Zero(), dt);
@@ -267,25 +288,21 @@ class AimPlannerNode final : public Node {
         target_frames_ ? nlohmann::json(std::sqrt(squared_error_ / static_cast<double>(target_frames_))) : nullptr;
     const nlohmann::json first = first_fire_ ? nlohmann::json(*first_fire_) : nullptr;
     ctx.set_report_section(
-        id,
-        {{"frames", frames_},
-         {"target_frames", target_frames_},
-         {"aim_rmse_m", rmse},
-         {"fire_count", fire_count_},
-         {"time_to_first_fire_s", first},
-         {"holds", holds_},
-         {"ground_frames", ground_frames_}},
-        fmt::format("Target in {} of {} frames; aim error (from the tracks) {} m RMS; {} shot(s), "
-                    "the first at {}; held {} time(s) after losing the target.\n",
-                    target_frames_, frames_, rmse.is_null() ? "n/a" : fmt::format("{:.3f}", rmse.get<double>()),
-                    fire_count_, first.is_null() ? "n/a" : fmt::format("{:.2f} s", first.get<double>()), holds_));
-    ctx.describe_quantity(id + ".frames");
-    ctx.describe_quantity(id + ".target_frames");
-    ctx.describe_metric(id + ".aim_rmse_m", "m", false);
-    ctx.describe_quantity(id + ".fire_count");
-    ctx.describe_metric(id + ".time_to_first_fire_s", "s", false);
-    ctx.describe_metric(id + ".holds", "", false);
-    ctx.describe_quantity(id + ".ground_frames");
+        id, ReportSection()
+                .quantity("frames", frames_)
+                .quantity("target_frames", target_frames_)
+                .metric("aim_rmse_m", rmse, "m", Better::lower)
+                .quantity("fire_count", fire_count_)
+                .metric("time_to_first_fire_s", first, "s", Better::lower)
+                .metric("holds", holds_, "", Better::lower)
+                .quantity("ground_frames", ground_frames_)
+                .quantity("terminal_frames", terminal_frames_)
+                .quantity("first_seen_range_m", first_seen_range_ ? nlohmann::json(*first_seen_range_) : nullptr, "m")
+                .markdown(fmt::format("Target in {} of {} frames; aim error (from the tracks) {} m RMS; {} shot(s), "
+                                      "the first at {}; held {} time(s) after losing the target.\n",
+                                      target_frames_, frames_,
+                                      rmse.is_null() ? "n/a" : fmt::format("{:.3f}", rmse.get<double>()), fire_count_,
+                                      first.is_null() ? "n/a" : fmt::format("{:.2f} s", first.get<double>()), holds_)));
   }
 
  private:
@@ -298,6 +315,25 @@ class AimPlannerNode final : public Node {
     takeoff_.yaw = geometry::yaw_of(hunter.orientation);
     search_ = takeoff_;
     search_.position += cfg_.search_advance_m * Eigen::Vector3d(std::cos(takeoff_.yaw), std::sin(takeoff_.yaw), 0.0);
+  }
+
+  // What the guidance law sees: the reference it steers, the target's estimate, the aim pose.
+  guidance::Engagement engagement(double dt) const {
+    guidance::Engagement e;
+    e.dt = dt;
+    e.position = reference_->position();
+    e.velocity = reference_->velocity();
+    e.yaw = reference_->yaw();
+    const Eigen::VectorXd x = estimate_->state();
+    e.target.position = x.head<3>();
+    e.target.velocity = x.segment<3>(3);
+    e.target.acceleration = x.segment<3>(6);
+    e.target.position_covariance = estimate_->covariance().topLeftCorner<3, 3>();
+    e.aim = *goal_;
+    e.geometry = {cfg_.aim_point_m, cfg_.camera_offset_m};
+    e.limits = {cfg_.max_speed_m_s, cfg_.max_acceleration_m_s2};
+    e.min_altitude = cfg_.min_altitude_m;
+    return e;
   }
 
   // Back off from where the target was last seen, along the line to the hunter, and face it: from
@@ -314,6 +350,7 @@ class AimPlannerNode final : public Node {
   }
 
   AimPlannerConfig cfg_;
+  std::shared_ptr<guidance::Guidance> guidance_;
   std::optional<AimReference> reference_;
   FireTrigger fire_{cfg_.capture_radius_m, cfg_.dwell_s, cfg_.cooldown_s};
   net::NetModel net_{{cfg_.aim_point_m, cfg_.net_flight_time_s, cfg_.capture_radius_m, cfg_.net_open_s}};
@@ -324,9 +361,10 @@ class AimPlannerNode final : public Node {
   std::uint64_t target_id_ = 0;
   Eigen::Vector3d goal_velocity_ = Eigen::Vector3d::Zero();
   std::optional<double> last_t_, first_fire_;
+  std::optional<double> first_seen_range_;  // m from the camera, at the first sighting engaged
   double last_seen_ = 0.0;
   bool holding_ = false, armed_ = false;
-  std::uint64_t frames_ = 0, target_frames_ = 0, fire_count_ = 0, holds_ = 0, ground_frames_ = 0;
+  std::uint64_t frames_ = 0, target_frames_ = 0, fire_count_ = 0, holds_ = 0, ground_frames_ = 0, terminal_frames_ = 0;
   double squared_error_ = 0.0;
 };
 KESTREL_REGISTER_NODE(AimPlannerNode)

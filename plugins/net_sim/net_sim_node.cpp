@@ -63,7 +63,8 @@ class NetSimNode final : public Node {
             "A fire order launches the net on a parabola that opens at open_point_m (camera frame at launch) after "
             "flight_time_s; an intruder within radius_m of its centre while open is caught. Reports "
             "control.{aim_rmse_m, "
-            "time_to_align_s, time_to_first_fire_s, fire_count, captured, time_to_capture_s} from the true states, "
+            "time_to_align_s, time_to_first_fire_s, fire_count, captured, first_shot_captured, time_to_capture_s} from "
+            "the true states, "
             "and draws the flight (top view, heights) and the aim error with the shots.")
         .input(kFire, "orders to fire")
         .input(kHunter, "the hunter's true state", {.trigger = Trigger::latest})
@@ -108,6 +109,7 @@ class NetSimNode final : public Node {
       for (const auto& [shot, index] : shots_)
         if (const auto caught = model_.sweep(shot, t0, from, tt, intruder->position_world, closest_[index])) {
           captured_at_ = *caught;
+          captured_by_ = index;
           ctx.log().info("intruder {} caught at t = {:.3f} s, ({:.2f}, {:.2f}, {:.2f}) m", intruder->id, *caught,
                          intruder->position_world.x(), intruder->position_world.y(), intruder->position_world.z());
           ctx.publish(kCapture, msg::NetCapture{truth->stamp, intruder->id, intruder->position_world});
@@ -135,6 +137,7 @@ class NetSimNode final : public Node {
             .quantity("fire_count", fire_times_.size())
             .quantity("shots", shots_json())
             .metric("captured", captured_at_.has_value(), "", Better::higher)
+            .metric("first_shot_captured", captured_by_ == std::optional<std::size_t>(0), "", Better::higher)
             .metric("time_to_capture_s", maybe(captured_at_), "s", Better::lower)
             .markdown(fmt::format(
                 "{}. Aligned (true aim error within {:.2f} m) at {}; aim error from then on {} RMS; {} shot(s), "
@@ -216,6 +219,7 @@ class NetSimNode final : public Node {
   std::optional<std::pair<double, Eigen::Vector3d>> previous_;  ///< the intruder's last sample
   std::vector<double> fire_times_;
   std::optional<double> first_fire_, aligned_at_, captured_at_;
+  std::optional<std::size_t> captured_by_;  // the shot that caught it
   double squared_error_ = 0.0;
   std::uint64_t aligned_samples_ = 0;
   std::vector<double> t_, error_;

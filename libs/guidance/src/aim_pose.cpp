@@ -1,0 +1,28 @@
+#include "kestrel/guidance/aim_pose.hpp"
+
+#include <cmath>
+#include <kestrel/geometry/frames.hpp>
+
+namespace kestrel::guidance {
+
+double angle_difference(double a, double b) {
+  double d = std::remainder(a - b, 2.0 * M_PI);
+  if (d <= -M_PI) d += 2.0 * M_PI;
+  return d;
+}
+
+AimPose aim_pose(const Eigen::Vector3d& intruder_world, const Eigen::Vector3d& hunter_position, double current_yaw,
+                 const Eigen::Vector3d& aim_point_camera, const Eigen::Vector3d& camera_offset_body) {
+  AimPose pose;
+  const Eigen::Vector3d camera =
+      hunter_position + Eigen::AngleAxisd(current_yaw, Eigen::Vector3d::UnitZ()) * camera_offset_body;
+  const Eigen::Vector2d towards = (intruder_world - camera).head<2>();
+  pose.yaw = towards.norm() > 0.05 ? std::atan2(towards.y(), towards.x()) : current_yaw;
+  // A level camera with that heading, placed so that the intruder appears at the aim point.
+  const geometry::CameraPose level = geometry::level_camera(Eigen::Vector3d::Zero(), pose.yaw);
+  const Eigen::Vector3d camera_wanted = intruder_world - level.world_from_camera() * aim_point_camera;
+  pose.position = camera_wanted - level.body_to_world * camera_offset_body;
+  return pose;
+}
+
+}  // namespace kestrel::guidance
