@@ -25,8 +25,8 @@ manoeuvres, 4 to 9 m ahead of the hunter's start, at up to 3 m/s, in a wind of u
 A speed band LO:HI draws the intruder's top speed in [max(LO, 0.5), HI] m/s; the default band,
 0:3, is the benchmark above, seed for seed. Above 3 m/s an intruder also flies as a multirotor
 can: it turns and brakes at 4 to 8 m/s^2 at most, so its figure-8, its line and its random box
-grow with its speed (a line long enough to reach its top speed, a figure-8 whose curvature it
-can fly, a box as wide as its turns).
+grow with its speed (a line long enough to reach its top speed, a figure-8 wide enough for its
+turns, a box as wide as its turns), never lower than the default band's.
 """
 import csv
 import json
@@ -79,11 +79,12 @@ def scenario(seed, band=(0.0, MAX_INTRUDER_SPEED), shapes=SHAPES):
         half_width, half_height = rng.uniform(0.5, 2.0), rng.uniform(0.25, 0.8)
         top_speed = rng.uniform(speed_lo, speed_hi)
         if top_speed > MAX_INTRUDER_SPEED:
-            # Its acceleration, at most w^2 max(hw, 4 hh), within what it can fly: scaled up.
+            # Its acceleration, at most w^2 max(hw, 4 hh) with w = v / sqrt(hw^2 + 4 hh^2), within
+            # what it can fly: the figure widens (never deepens: it stays above the height gate).
             accel = rng.uniform(4.0, 8.0)
-            scale = top_speed**2 * max(half_width, 4.0 * half_height) / (
-                accel * (half_width**2 + 4.0 * half_height**2))
-            half_width, half_height = half_width * max(1.0, scale), half_height * max(1.0, scale)
+            half_height = min(half_height, top_speed**2 / (4.0 * accel))
+            while top_speed**2 * max(half_width, 4.0 * half_height) > accel * (half_width**2 + 4.0 * half_height**2):
+                half_width *= 1.05
         # The Lissajous curve is fastest at its centre, where |v| = w sqrt(hw^2 + 4 hh^2).
         period = 2.0 * math.pi * math.hypot(half_width, 2.0 * half_height) / top_speed
         s.update({"intruder.distance_m": f"{distance:.3f}", "intruder.camera_position_m": vec([0.0, lateral, height]),
@@ -109,7 +110,7 @@ def scenario(seed, band=(0.0, MAX_INTRUDER_SPEED), shapes=SHAPES):
         if speed > MAX_INTRUDER_SPEED:
             accel = rng.uniform(4.0, 8.0)
             turn = speed**2 / accel  # the radius of its tightest turn
-            extent = [max(extent[0], 0.5 * turn), max(extent[1], turn), max(extent[2], 0.25 * turn)]
+            extent = [max(extent[0], 0.5 * turn), max(extent[1], turn), extent[2]]  # never deeper
             s["intruder.max_acceleration_m_s2"] = f"{accel:.3f}"
         s.update({"intruder.random_centre_m": vec([distance, lateral, height]),
                   "intruder.random_half_extent_m": vec(extent),

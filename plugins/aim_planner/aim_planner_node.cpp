@@ -12,6 +12,7 @@
 #include <kestrel/guidance/aim_reference.hpp>
 #include <kestrel/guidance/guidance.hpp>
 #include <kestrel/messages/net_fire.hpp>
+#include <kestrel/messages/net_launcher.hpp>
 #include <kestrel/messages/tracks.hpp>
 #include <kestrel/messages/trajectory_setpoint.hpp>
 #include <kestrel/messages/vehicle_state.hpp>
@@ -29,6 +30,7 @@ using guidance::AimReference;
 
 struct AimPlannerConfig {
   enum class WhenLost { hold, search, back_off };
+  enum class ShotPrediction { constant_velocity, constant_acceleration };
   Eigen::Vector3d aim_point_m{0.0, 1.0, 2.0};
   Eigen::Vector3d camera_offset_m{0.1, 0.0, 0.0};
   double gain_1_s = 1.0;
@@ -47,6 +49,8 @@ struct AimPlannerConfig {
   double back_off_distance_m = 5.0;
   double back_off_height_m = 0.5;
   double capture_radius_m = 0.5;
+  double last_net_radius_m = 0.3;
+  ShotPrediction shot_prediction = ShotPrediction::constant_velocity;
   double dwell_s = 0.5;
   double net_flight_time_s = 0.4;
   double net_open_s = 0.3;
@@ -58,6 +62,7 @@ class AimPlannerNode final : public Node {
  public:
   static constexpr Input<msg::Tracks> kTracks{"tracks"};
   static constexpr Input<msg::VehicleState> kOdometry{"odometry"};
+  static constexpr Input<msg::NetLauncher> kLauncher{"launcher"};
   static constexpr Output<msg::TrajectorySetpoint> kSetpoint{"setpoint"};
   static constexpr Output<msg::NetFire> kFire{"fire"};
 
@@ -137,6 +142,15 @@ class AimPlannerNode final : public Node {
         .with_unit("m")
         .range(0.01, 10.0)
         .describe("fire when |x_E^d - x_E| stays below this (the net's capture radius)");
+    c.choice("shot_prediction", &C::shot_prediction,
+             {{"cv", C::ShotPrediction::constant_velocity}, {"ca", C::ShotPrediction::constant_acceleration}})
+        .describe(
+            "the target's motion while the net flies, for the predicted miss: constant velocity, or the "
+            "estimate's acceleration held");
+    c.param("last_net_radius_m", &C::last_net_radius_m)
+        .with_unit("m")
+        .range(0.01, 10.0)
+        .describe("the last net is fired only on a predicted miss within this (a better shot than the others)");
     c.param("net_flight_time_s", &C::net_flight_time_s)
         .with_unit("s")
         .range(0.0, 10.0)
@@ -154,6 +168,8 @@ class AimPlannerNode final : public Node {
         .describe(
             "how the hunter closes on the target before the terminal phase aligns the net: hold_aim (the paper's: "
             "terminal from the start), pursuit, pn, predictive");
+    c.rule("last_net_radius_m <= capture_radius_m", {"last_net_radius_m", "capture_radius_m"},
+           [](const C& k) { return k.last_net_radius_m <= k.capture_radius_m; });
     c.rule("min_altitude_m <= takeoff_altitude_m", {"min_altitude_m", "takeoff_altitude_m"},
            [](const C& k) { return k.min_altitude_m <= k.takeoff_altitude_m; });
     return NodeSpec("aim_planner", "Aims the hunter so the target sits where the net opens, and fires")
@@ -168,6 +184,10 @@ class AimPlannerNode final : public Node {
             "so the shot leads a moving target.")
         .input(kTracks, "the tracker's tracks; the selected one is the target (camera frame)")
         .input(kOdometry, "the hunter's state", {.trigger = Trigger::latest})
+        .input(kLauncher,
+               "the net launcher's state: no shot while it reloads or is empty, the last net saved for a "
+               "better shot (unconnected: unlimited nets)",
+               {.trigger = Trigger::latest, .optional = true})
         .output(kSetpoint, "where the hunter should be (world)")
         .output(kFire, "the order to fire the net")
         .config(std::move(c));
@@ -229,9 +249,12 @@ class AimPlannerNode final : public Node {
       ++target_frames_;
       squared_error_ += error->squaredNorm();
       // The miss if the net were fired now, on the launcher's ballistics, against the target
-      // predicted at constant velocity over the time the net is open (the estimate's acceleration,
-      // extrapolated that far, adds more noise than it removes lag).
-      miss = predicted_miss(net_, camera, hunter->velocity, {x.head<3>(), x.segment<3>(3), Eigen::Vector3d::Zero()});
+      // predicted over the time the net is open (shot_prediction: at constant velocity by default;
+      // the estimate's acceleration, extrapolated that far, is noisier at low speeds).
+      const bool with_acceleration = cfg_.shot_prediction == AimPlannerConfig::ShotPrediction::constant_acceleration;
+      miss = predicted_miss(net_, camera, hunter->velocity,
+                            {x.head<3>(), x.segment<3>(3),
+                             with_acceleration ? Eigen::Vector3d(x.segment<3>(6)) : Eigen::Vector3d::Zero()});
     }
 
     if (goal_ && target) {
@@ -273,13 +296,25 @@ class AimPlannerNode final : public Node {
     sp.yaw_rate = reference_->yaw_rate();
     ctx.publish(kSetpoint, std::move(sp));
 
-    if (fire_.update(t, miss)) {
+    if (fire_.update(t, launcher_ready(ctx, t) ? miss : std::nullopt, fire_radius(ctx))) {
       ++fire_count_;
       if (!first_fire_) first_fire_ = t;
       ctx.log().info("fire at t = {:.2f} s: target {}, aim error {:.2f} m, predicted miss {:.2f} m", t, target->id,
                      error->norm(), *miss);
       ctx.publish(kFire, msg::NetFire{tracks->stamp, target->id, *error});
     }
+  }
+
+  // The launcher (when connected) fires only when loaded and not reloading.
+  static bool launcher_ready(Context& ctx, double t) {
+    const auto launcher = ctx.get(kLauncher);
+    return !launcher || (launcher->nets_left != 0 && t >= to_seconds(launcher->ready_at));
+  }
+
+  // The last net waits for a better shot than the others.
+  double fire_radius(Context& ctx) const {
+    const auto launcher = ctx.get(kLauncher);
+    return launcher && launcher->nets_left == 1 ? cfg_.last_net_radius_m : cfg_.capture_radius_m;
   }
 
   void finish(Context& ctx) override {

@@ -24,8 +24,8 @@ double predicted_miss(const net::NetModel& net, const geometry::CameraPose& laun
 FireTrigger::FireTrigger(double capture_radius_m, double dwell_s, double cooldown_s)
     : radius_(capture_radius_m), dwell_(dwell_s), cooldown_(cooldown_s) {}
 
-bool FireTrigger::update(double t, std::optional<double> miss_m) {
-  if (!miss_m || !(*miss_m <= radius_)) {
+bool FireTrigger::update(double t, std::optional<double> miss_m, double radius_m) {
+  if (!miss_m || !(*miss_m <= radius_m)) {
     within_since_ = -1.0;
     return false;
   }

@@ -26,7 +26,9 @@ class FireTrigger {
   FireTrigger(double capture_radius_m, double dwell_s, double cooldown_s);
   /// The predicted miss at time t (seconds), or none (no target). True when the net is to be
   /// fired now.
-  bool update(double t, std::optional<double> miss_m);
+  bool update(double t, std::optional<double> miss_m) { return update(t, miss_m, radius_); }
+  /// The same with another radius for this instant (a tighter one for the last net).
+  bool update(double t, std::optional<double> miss_m, double radius_m);
 
  private:
   double radius_, dwell_, cooldown_;

@@ -11,6 +11,7 @@
 #include <kestrel/messages/ground_truth.hpp>
 #include <kestrel/messages/net_capture.hpp>
 #include <kestrel/messages/net_fire.hpp>
+#include <kestrel/messages/net_launcher.hpp>
 #include <kestrel/messages/vehicle_state.hpp>
 #include <kestrel/plot/line_plot.hpp>
 #include <kestrel/plugin.hpp>
@@ -29,6 +30,8 @@ struct NetSimConfig {
   double radius_m = 0.6;
   double open_for_s = 0.3;
   double gravity_m_s2 = 9.81;
+  std::int64_t nets = 0;  // 0: unlimited
+  double reload_s = 0.0;
   std::string section = "control";
   std::int64_t max_samples = 100000;
 };
@@ -39,6 +42,7 @@ class NetSimNode final : public Node {
   static constexpr Input<msg::VehicleState> kHunter{"hunter"};
   static constexpr Input<msg::GroundTruth> kTruth{"truth"};
   static constexpr Output<msg::NetCapture> kCapture{"capture"};
+  static constexpr Output<msg::NetLauncher> kLauncher{"launcher"};
 
   static NodeSpec spec() {
     using C = NetSimConfig;
@@ -56,6 +60,11 @@ class NetSimNode final : public Node {
     c.param("radius_m", &C::radius_m).with_unit("m").range(0.01, 10.0).describe("radius of the open net");
     c.param("open_for_s", &C::open_for_s).with_unit("s").range(0.0, 10.0).describe("how long it stays open");
     c.param("gravity_m_s2", &C::gravity_m_s2).with_unit("m/s^2").range(0.0, 100.0).describe("gravity on the net");
+    c.param("nets", &C::nets).range(0, 1000).describe("nets the launcher carries; 0: unlimited");
+    c.param("reload_s", &C::reload_s)
+        .with_unit("s")
+        .range(0.0, 3600.0)
+        .describe("after a shot, the launcher cannot fire again for this long");
     c.param("section", &C::section).describe("report section of the closed-loop figures");
     c.param("max_samples", &C::max_samples).range(2, 10000000).describe("samples kept for the plots (memory bound)");
     return NodeSpec("net_sim", "Simulated net: flies, opens, catches; judges the intercept")
@@ -70,6 +79,7 @@ class NetSimNode final : public Node {
         .input(kHunter, "the hunter's true state", {.trigger = Trigger::latest})
         .input(kTruth, "the intruders' ground truth")
         .output(kCapture, "the intruder caught, once")
+        .output(kLauncher, "the launcher's state (nets left, ready when), at the start and after each shot")
         .config(std::move(c));
   }
 
@@ -81,11 +91,25 @@ class NetSimNode final : public Node {
     const double t = to_seconds(ctx.now());
     const geometry::CameraPose launcher =
         geometry::camera_on_body(hunter->position, hunter->orientation, cfg_.camera_offset_m);
+    if (!announced_) {
+      announced_ = true;
+      publish_launcher(ctx, ctx.now());
+    }
     if (ctx.triggered_by(kFire)) {
+      // An order the launcher cannot carry out is refused, logged and counted, never lost.
+      const bool empty = cfg_.nets > 0 && static_cast<std::int64_t>(fire_times_.size()) >= cfg_.nets;
+      if (empty || t < ready_at_) {
+        ++refused_;
+        ctx.log().warn("fire order at t = {:.2f} s refused: {}", t,
+                       empty ? "no net left" : fmt::format("reloading until {:.2f} s", ready_at_));
+        return;
+      }
+      ready_at_ = t + cfg_.reload_s;
       shots_.push_back({model_.fire(t, launcher, hunter->velocity), fire_times_.size()});
       fire_times_.push_back(t);
       closest_.push_back(std::numeric_limits<double>::infinity());
       if (!first_fire_) first_fire_ = t;
+      publish_launcher(ctx, ctx.now());
       return;
     }
     const auto truth = ctx.get(kTruth);
@@ -134,7 +158,10 @@ class NetSimNode final : public Node {
             .metric("aim_rmse_m", maybe(rmse), "m", Better::lower)
             .metric("time_to_align_s", maybe(aligned_at_), "s", Better::lower)
             .metric("time_to_first_fire_s", maybe(first_fire_), "s", Better::lower)
-            .quantity("fire_count", fire_times_.size())
+            .quantity("fire_count", fire_times_.size() + refused_)
+            .quantity("nets", cfg_.nets > 0 ? nlohmann::json(cfg_.nets) : nlohmann::json())
+            .metric("nets_used", fire_times_.size(), "", Better::lower)
+            .quantity("refused_fires", refused_)
             .quantity("shots", shots_json())
             .metric("captured", captured_at_.has_value(), "", Better::higher)
             .metric("first_shot_captured", captured_by_ == std::optional<std::size_t>(0), "", Better::higher)
@@ -156,6 +183,12 @@ class NetSimNode final : public Node {
   explicit NetSimNode(const NetSimConfig& cfg)
       : cfg_(cfg),
         model_(NetParams{cfg.open_point_m, cfg.flight_time_s, cfg.radius_m, cfg.open_for_s, cfg.gravity_m_s2}) {}
+
+  void publish_launcher(Context& ctx, Time now) {
+    const auto used = static_cast<std::int64_t>(fire_times_.size());
+    ctx.publish(kLauncher, msg::NetLauncher{now, cfg_.nets > 0 ? cfg_.nets - used : -1, used,
+                                            from_seconds(std::max(ready_at_, 0.0))});
+  }
 
   // Each shot: when, and how near the net's centre came to the intruder while open (null: the
   // run ended or the intruder was caught by an earlier shot before it opened).
@@ -220,6 +253,9 @@ class NetSimNode final : public Node {
   std::vector<double> fire_times_;
   std::optional<double> first_fire_, aligned_at_, captured_at_;
   std::optional<std::size_t> captured_by_;  // the shot that caught it
+  bool announced_ = false;                  // the launcher's first state is out
+  double ready_at_ = 0.0;                   // s: no shot before this (reloading)
+  std::size_t refused_ = 0;                 // fire orders without a net or while reloading
   double squared_error_ = 0.0;
   std::uint64_t aligned_samples_ = 0;
   std::vector<double> t_, error_;

@@ -161,3 +161,36 @@ TEST(RunStatistics, EachNodeReportsTheAgeOfWhatItPublishesSinceCapture) {
   const std::string table = format_stats(r);
   EXPECT_THAT(table, ::testing::HasSubstr("age p50 ms"));
 }
+
+// The launcher's budget: two fire orders (0.5 s and 1 s) at a launcher that carries one net, or
+// reloads for 2 s, launch one net and refuse the other; unlimited, both fly.
+TEST(NetSim, ALauncherFiresOnlyTheNetsItCarriesAndWaitsForItsReload) {
+  ASSERT_TRUE(kestrel::testing::built_plugins().load(KESTREL_TEST_PLUGIN_DIR "/kestrel_test_nodes.so"));
+  struct Case {
+    std::string params;
+    int used, refused;
+  };
+  for (const Case& c : {Case{"{}", 2, 0}, Case{"{nets: 1}", 1, 1}, Case{"{reload_s: 2.0}", 1, 1},
+                        Case{"{nets: 2, reload_s: 0.3}", 2, 0}}) {
+    SCOPED_TRACE(c.params);
+    const std::string yaml =
+        "kestrel: 1\nname: launcher\nexecutor: {type: lockstep}\nduration: 2.0\nnodes:\n"
+        "  - {id: intruder, type: intruder, params: {shape: figure8, rate_hz: 30}}\n"
+        "  - {id: hunter, type: quadrotor_sim}\n"
+        "  - {id: orders, type: fire_orders, params: {first_s: 0.5, second_s: 1.0}}\n"
+        "  - {id: net, type: net_sim, params: " +
+        c.params +
+        "}\n"
+        "connections:\n"
+        "  - {from: orders.fire, to: net.fire, policy: fifo 16}\n"
+        "  - {from: hunter.state, to: net.hunter}\n"
+        "  - {from: intruder.truth, to: net.truth, policy: fifo 64}\n";
+    const RunResult r = kestrel::testing::run_built_graph(GraphSource::from_string(yaml, "launcher.yaml"), {});
+    ASSERT_EQ(r.outcome, RunOutcome::completed) << (r.errors.empty() ? "" : r.errors.front());
+    const auto& control = r.report.at("control");
+    EXPECT_EQ(control.at("nets_used"), c.used);
+    EXPECT_EQ(control.at("refused_fires"), c.refused);
+    EXPECT_EQ(control.at("fire_count"), 2);
+    EXPECT_EQ(control.at("shots").size(), static_cast<std::size_t>(c.used));
+  }
+}

@@ -11,6 +11,7 @@
 #include <kestrel/messages/ground_truth.hpp>
 #include <kestrel/messages/net_capture.hpp>
 #include <kestrel/messages/net_fire.hpp>
+#include <kestrel/messages/net_launcher.hpp>
 #include <kestrel/messages/point_cloud.hpp>
 #include <kestrel/messages/stereo_frame.hpp>
 #include <kestrel/messages/tracks.hpp>
@@ -51,7 +52,7 @@ TEST(MessageReference, EveryInTreeMessageDeclaresItsFieldsAndIsDocumented) {
         message_info<msg::Tracks>(), message_info<msg::GroundTruth>(), message_info<msg::VehicleState>(),
         message_info<msg::TrajectorySetpoint>(), message_info<msg::ActuatorCommand>(),
         message_info<msg::AttitudeTarget>(), message_info<msg::NetFire>(), message_info<msg::NetCapture>(),
-        message_info<msg::AutopilotStatus>()})
+        message_info<msg::NetLauncher>(), message_info<msg::AutopilotStatus>()})
     types[info.name] = info;
   PluginHost& host = kestrel::testing::built_plugins();
   ASSERT_TRUE(host.errors().empty()) << host.errors().front().message;

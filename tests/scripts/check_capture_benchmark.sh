@@ -34,3 +34,36 @@ md = open(os.path.join(out, "capture.md")).read()
 assert "| detection-level camera | 6 |" in md, md
 assert "rendered" not in doc
 PY
+
+# By speed band and guidance law: the same engagements for each law, every band's figures
+# recounted from the runs, the Wilson interval around the rate, and the curve drawn.
+bands=$out/bands
+scripts/capture-benchmark "$bands" --seeds 2 --rendered 0 --duration 8 --bands 0:3,6:10 \
+  --guidance hold_aim,pn > /dev/null
+python3 - "$bands" <<'PY'
+import csv, json, os, sys
+out = sys.argv[1]
+cases = list(csv.DictReader(open(os.path.join(out, "cases.csv"))))
+assert [c["seed"] for c in cases] == ["1", "2", "100001", "100002"], [c["seed"] for c in cases]
+# The fast band's intruders fly faster than 6 m/s, the default band's no faster than 3.
+for c in cases:
+    speed = float(c["intruder.speed_m_s"] or c["intruder.max_speed_m_s"] or 0.0) or None
+    if speed is not None:
+        assert (speed >= 6.0) == (int(c["seed"]) > 100000), c
+doc = json.load(open(os.path.join(out, "capture.json")))
+assert set(doc["by_guidance"]) == {"hold_aim", "pn"}, doc.keys()
+for law, summary in doc["by_guidance"].items():
+    assert summary["runs"] == 4
+    assert set(summary["by_band"]) == {"0:3", "6:10"}, summary["by_band"]
+    for band, b in summary["by_band"].items():
+        runs = [r for r in summary["per_run"] if r["band"] == band]
+        assert b["runs"] == len(runs) == 2
+        assert b["captured"] == sum(r["captured"] for r in runs)
+        assert b["wilson_low"] <= b["rate"] <= b["wilson_high"], b
+        assert 0.0 <= b["wilson_low"] and b["wilson_high"] <= 1.0
+    # Each law flew the same engagements: the same seeds with the same intruder.
+    assert [r["seed"] for r in summary["per_run"]] == [1, 2, 100001, 100002]
+assert os.path.getsize(os.path.join(out, "capture_curve.png")) > 1000
+rows = list(csv.DictReader(open(os.path.join(out, "capture_curve.csv"))))
+assert [r["band"] for r in rows] == ["0:3", "6:10"] and "pn_low" in rows[0], rows
+PY

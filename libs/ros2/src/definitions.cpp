@@ -90,6 +90,8 @@ const std::map<std::string, std::string>& definitions() {
        "float64 thrust_n\nfloat64 hover_thrust_n\n"},
       {"kestrel_msgs/NetFire", "std_msgs/Header header\nuint64 target_id\ngeometry_msgs/Vector3 aim_error_m\n"},
       {"kestrel_msgs/NetCapture", "std_msgs/Header header\nuint64 object_id\ngeometry_msgs/Point position_world\n"},
+      {"kestrel_msgs/NetLauncher",
+       "std_msgs/Header header\nint64 nets_left\nint64 nets_used\nbuiltin_interfaces/Time ready_at\n"},
   };
   return defs;
 }

@@ -4,6 +4,7 @@
 #include <kestrel/messages/attitude_target.hpp>
 #include <kestrel/messages/net_capture.hpp>
 #include <kestrel/messages/net_fire.hpp>
+#include <kestrel/messages/net_launcher.hpp>
 #include <kestrel/messages/trajectory_setpoint.hpp>
 
 #include "fields.hpp"
@@ -114,6 +115,22 @@ msg::NetCapture read_capture(CdrReader& r) {
   return c;
 }
 
+constexpr char kLauncher[] = "kestrel_msgs/msg/NetLauncher";
+void write_launcher(CdrWriter& w, const msg::NetLauncher& l) {
+  write_header(w, l.stamp, "");
+  w.i64(l.nets_left);
+  w.i64(l.nets_used);
+  write_time(w, l.ready_at);
+}
+msg::NetLauncher read_launcher(CdrReader& r) {
+  msg::NetLauncher l;
+  l.stamp = read_header(r).stamp;
+  l.nets_left = r.i64();
+  l.nets_used = r.i64();
+  l.ready_at = read_time(r);
+  return l;
+}
+
 }  // namespace
 
 std::vector<TypeCodec> control_codecs() {
@@ -121,7 +138,8 @@ std::vector<TypeCodec> control_codecs() {
           single_channel_codec<msg::ActuatorCommand, kActuator, write_actuator, read_actuator>(),
           single_channel_codec<msg::AttitudeTarget, kAttitude, write_attitude, read_attitude>(),
           single_channel_codec<msg::NetFire, kFire, write_fire, read_fire>(),
-          single_channel_codec<msg::NetCapture, kCapture, write_capture, read_capture>()};
+          single_channel_codec<msg::NetCapture, kCapture, write_capture, read_capture>(),
+          single_channel_codec<msg::NetLauncher, kLauncher, write_launcher, read_launcher>()};
 }
 
 }  // namespace kestrel::ros2::detail

@@ -10,6 +10,7 @@
 #include <kestrel/messages/imu.hpp>
 #include <kestrel/messages/net_capture.hpp>
 #include <kestrel/messages/net_fire.hpp>
+#include <kestrel/messages/net_launcher.hpp>
 #include <kestrel/messages/point_cloud.hpp>
 #include <kestrel/messages/stereo_frame.hpp>
 #include <kestrel/messages/tracks.hpp>
@@ -272,6 +273,11 @@ TEST(Ros2Messages, ControlMessagesRoundTrip) {
   EXPECT_TRUE(std::isnan(nfb->aim_error_m.y()));
   msg::NetCapture nc{Time(5), 2, {4, 5, 6}};
   EXPECT_EQ(round_trip(nc)->position_world, nc.position_world);
+  msg::NetLauncher nl{Time(6), 1, 1, Time(1'500'000'000)};
+  const auto nlb = round_trip(nl);
+  EXPECT_EQ(nlb->nets_left, 1);
+  EXPECT_EQ(nlb->nets_used, 1);
+  EXPECT_EQ(nlb->ready_at, nl.ready_at);
 }
 
 TEST(Ros2Messages, BytesThatAreNotTheTypeGiveAnErrorNotACrash) {

@@ -25,6 +25,13 @@ TEST(FireTrigger, FiresAfterTheDwellAndNotAgainWithinTheCooldown) {
   EXPECT_FALSE(fire.update(10.0, std::nullopt));  // no target, no shot
 }
 
+TEST(FireTrigger, ATighterRadiusWaitsForABetterShot) {
+  FireTrigger fire(0.5, 0.0, 0.0);
+  EXPECT_FALSE(fire.update(0.0, 0.4, 0.3));  // good enough for a spare net, not for the last
+  EXPECT_TRUE(fire.update(0.1, 0.25, 0.3));
+  EXPECT_TRUE(fire.update(0.2, 0.4));  // the default radius
+}
+
 TEST(FireTrigger, WithoutADwellItFiresTheMomentTheMissIsWithinTheRadius) {
   FireTrigger fire(0.5, 0.0, 3.0);
   EXPECT_FALSE(fire.update(0.0, 0.51));
