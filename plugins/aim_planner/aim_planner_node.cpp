@@ -167,7 +167,7 @@ class AimPlannerNode final : public Node {
     c.component("guidance", &C::guidance, "guidance", "hold_aim")
         .describe(
             "how the hunter closes on the target before the terminal phase aligns the net: hold_aim (the paper's: "
-            "terminal from the start), pursuit, pn, predictive");
+            "terminal from the start), pursuit, pn, frpn, predictive");
     c.rule("last_net_radius_m <= capture_radius_m", {"last_net_radius_m", "capture_radius_m"},
            [](const C& k) { return k.last_net_radius_m <= k.capture_radius_m; });
     c.rule("min_altitude_m <= takeoff_altitude_m", {"min_altitude_m", "takeoff_altitude_m"},

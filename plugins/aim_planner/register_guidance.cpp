@@ -1,4 +1,5 @@
 // The guidance laws the aim planner ships (kestrel/guidance/*.hpp); a plugin can register more.
+#include <kestrel/guidance/fast_response_pn.hpp>
 #include <kestrel/guidance/hold_aim.hpp>
 #include <kestrel/guidance/predictive.hpp>
 #include <kestrel/guidance/proportional_navigation.hpp>
@@ -8,4 +9,5 @@
 KESTREL_REGISTER_COMPONENT(kestrel::guidance::Guidance, kestrel::guidance::HoldAim)
 KESTREL_REGISTER_COMPONENT(kestrel::guidance::Guidance, kestrel::guidance::Pursuit)
 KESTREL_REGISTER_COMPONENT(kestrel::guidance::Guidance, kestrel::guidance::ProportionalNavigation)
+KESTREL_REGISTER_COMPONENT(kestrel::guidance::Guidance, kestrel::guidance::FastResponsePn)
 KESTREL_REGISTER_COMPONENT(kestrel::guidance::Guidance, kestrel::guidance::Predictive)

@@ -5,6 +5,7 @@
 #include <gmock/gmock.h>
 
 #include <kestrel/guidance/aim_reference.hpp>
+#include <kestrel/guidance/fast_response_pn.hpp>
 #include <kestrel/guidance/hold_aim.hpp>
 #include <kestrel/guidance/predictive.hpp>
 #include <kestrel/guidance/proportional_navigation.hpp>
@@ -91,6 +92,7 @@ TEST(GuidanceLaws, EveryLawReachesTheTerminalPhaseWithinTheLimits) {
   laws.emplace_back("hold_aim", std::make_unique<HoldAim>());
   laws.emplace_back("pursuit", std::make_unique<Pursuit>(PursuitConfig{}));
   laws.emplace_back("pn", std::make_unique<ProportionalNavigation>(pn_config()));
+  laws.emplace_back("frpn", std::make_unique<FastResponsePn>(FastResponsePnConfig{}));
   laws.emplace_back("predictive", std::make_unique<Predictive>(PredictiveConfig{}));
   for (auto& [name, law] : laws) {
     const Outcome out = engage(*law, {12.0, -8.0, 4.0}, {0.0, 4.0, 0.0}, limits);
@@ -105,14 +107,38 @@ TEST(GuidanceLaws, LeadingLawsAlignBeforePursuitAgainstACrossingTarget) {
   const FlightLimits limits{8.0, 5.0};
   Pursuit pursuit(PursuitConfig{});
   ProportionalNavigation pn(pn_config());
+  FastResponsePn frpn(FastResponsePnConfig{});
   Predictive predictive(PredictiveConfig{});
   const Eigen::Vector3d start(14.0, -10.0, 4.0), velocity(0.0, 6.0, 0.0);
   const Outcome chased = engage(pursuit, start, velocity, limits);
   const Outcome led = engage(pn, start, velocity, limits);
+  const Outcome fast = engage(frpn, start, velocity, limits);
   const Outcome planned = engage(predictive, start, velocity, limits);
-  ASSERT_TRUE(chased.aligned_at && led.aligned_at && planned.aligned_at);
+  ASSERT_TRUE(chased.aligned_at && led.aligned_at && fast.aligned_at && planned.aligned_at);
   EXPECT_LT(*led.aligned_at, *chased.aligned_at);
+  EXPECT_LT(*fast.aligned_at, *chased.aligned_at);
   EXPECT_LT(*planned.aligned_at, *chased.aligned_at);
+}
+
+// On a collision course (the relative velocity along the line of sight) the zero-effort miss is
+// nil, and FRPN commands only its share of pursuit, G W dp; with no relative motion, the same.
+TEST(FastResponsePn, OnACollisionCourseOnlyItsShareOfPursuitRemains) {
+  const FastResponsePnConfig k;
+  const Eigen::Vector3d p(1.0, 2.0, 3.0), dp(6.0, -2.0, 1.0);
+  const Eigen::Vector3d v(0.5, 0.0, 0.0);
+  const Eigen::Vector3d closing = v - dp.normalized() * 3.0;  // the target flies straight at the pursuer
+  EXPECT_TRUE(frpn_acceleration(k, p, v, p + dp, closing).isApprox(k.gain * k.pursuit_weight * dp, 1e-9));
+  EXPECT_TRUE(frpn_acceleration(k, p, v, p + dp, v).isApprox(k.gain * k.pursuit_weight * dp, 1e-9));
+}
+
+// A crossing target: the command is the published law, G ((1 - W) ZEM / t_go^2 + W dp), with
+// t_go = |dp| / |dv|: here dp = (8, 0, 0), dv = (0, 4, 0), t_go = 2 s, ZEM = (8, 8, 0).
+TEST(FastResponsePn, LeadsACrossingTargetByItsZeroEffortMiss) {
+  FastResponsePnConfig k;
+  k.gain = 2.0;
+  k.pursuit_weight = 0.25;
+  const Eigen::Vector3d a = frpn_acceleration(k, kZero, kZero, {8.0, 0.0, 0.0}, {0.0, 4.0, 0.0});
+  EXPECT_TRUE(a.isApprox(Eigen::Vector3d(2.0 * (0.75 * 2.0 + 0.25 * 8.0), 2.0 * 0.75 * 2.0, 0.0), 1e-12)) << a;
 }
 
 TEST(Predictive, PlansTheEarliestReachableInterceptOfThePredictedTarget) {
