@@ -21,6 +21,7 @@
 #include <optional>
 
 #include "fire_decision.hpp"
+#include "target_estimate.hpp"
 
 namespace kestrel::aim {
 
@@ -44,12 +45,18 @@ struct AimPlannerConfig {
   double target_timeout_s = 1.0;
   double target_q = 1.0;
   double target_r = 1.0;
+  TargetFilterConfig::Model target_filter = TargetFilterConfig::Model::constant_acceleration;
+  double target_q_manoeuvre = 1000.0;
+  double target_switch_probability = 0.01;
   WhenLost when_lost = WhenLost::hold;
   double search_yaw_rate_deg_s = 20.0;
   double back_off_distance_m = 5.0;
   double back_off_height_m = 0.5;
   double capture_radius_m = 0.5;
   double last_net_radius_m = 0.3;
+  double fire_probability = 0.0;
+  double last_net_probability = 0.9;
+  double net_radius_m = 0.6;
   ShotPrediction shot_prediction = ShotPrediction::constant_velocity;
   double dwell_s = 0.5;
   double net_flight_time_s = 0.4;
@@ -121,6 +128,18 @@ class AimPlannerNode final : public Node {
         .with_unit("m^2")
         .range(1e-9, 1e6)
         .describe("world-frame target estimate: measurement noise");
+    c.choice("target_filter", &C::target_filter,
+             {{"ca", TargetFilterConfig::Model::constant_acceleration}, {"imm", TargetFilterConfig::Model::imm}})
+        .describe(
+            "world-frame target estimate: a constant-acceleration Kalman filter (q = target_q), or an IMM of a steady "
+            "(target_q) and a manoeuvring (target_q_manoeuvre) one");
+    c.param("target_q_manoeuvre", &C::target_q_manoeuvre)
+        .with_unit("m^2/s^5")
+        .range(0.0, 1e7)
+        .describe("imm: process noise (jerk) intensity of the manoeuvre model");
+    c.param("target_switch_probability", &C::target_switch_probability)
+        .range(0.0, 0.5)
+        .describe("imm: chance per frame that the target changes model");
     c.choice("when_lost", &C::when_lost,
              {{"hold", C::WhenLost::hold}, {"search", C::WhenLost::search}, {"back_off", C::WhenLost::back_off}})
         .describe(
@@ -147,6 +166,18 @@ class AimPlannerNode final : public Node {
         .describe(
             "the target's motion while the net flies, for the predicted miss: constant velocity, or the "
             "estimate's acceleration held");
+    c.param("fire_probability", &C::fire_probability)
+        .range(0.0, 1.0)
+        .describe(
+            "fire when the probability that the open net holds the target (its predicted position's distribution "
+            "against the net's opening) reaches this, instead of the capture_radius_m test; 0: the radius test");
+    c.param("last_net_probability", &C::last_net_probability)
+        .range(0.0, 1.0)
+        .describe("with fire_probability: the probability the last net waits for");
+    c.param("net_radius_m", &C::net_radius_m)
+        .with_unit("m")
+        .range(0.01, 10.0)
+        .describe("with fire_probability: the open net's radius (as net_sim has it)");
     c.param("last_net_radius_m", &C::last_net_radius_m)
         .with_unit("m")
         .range(0.01, 10.0)
@@ -220,7 +251,8 @@ class AimPlannerNode final : public Node {
     // aiming follows sightings only, and flies on towards the last one meanwhile.
     if (target && target->misses > 0) target = nullptr;
     std::optional<Eigen::Vector3d> error;
-    std::optional<double> miss;
+    std::optional<double> miss, probability;
+    std::optional<PredictedShot> shot;
     if (estimate_ && t - last_seen_ > cfg_.target_timeout_s) estimate_.reset();  // too old to predict from
     if (estimate_) estimate_->predict(dt);
     if (target) {
@@ -232,7 +264,8 @@ class AimPlannerNode final : public Node {
       const Eigen::Vector3d intruder = camera.to_world(in_camera);
       if (!first_seen_range_) first_seen_range_ = in_camera.norm();
       if (!estimate_ || target->id != target_id_) {
-        estimate_.emplace(intruder, tracking::KalmanConfig{cfg_.target_q, cfg_.target_r, 1.0});
+        estimate_.emplace(intruder, TargetFilterConfig{cfg_.target_filter, cfg_.target_q, cfg_.target_q_manoeuvre,
+                                                       cfg_.target_switch_probability, cfg_.target_r});
         target_id_ = target->id;
         guidance_->reset();
       } else {
@@ -252,9 +285,15 @@ class AimPlannerNode final : public Node {
       // predicted over the time the net is open (shot_prediction: at constant velocity by default;
       // the estimate's acceleration, extrapolated that far, is noisier at low speeds).
       const bool with_acceleration = cfg_.shot_prediction == AimPlannerConfig::ShotPrediction::constant_acceleration;
-      miss = predicted_miss(net_, camera, hunter->velocity,
-                            {x.head<3>(), x.segment<3>(3),
-                             with_acceleration ? Eigen::Vector3d(x.segment<3>(6)) : Eigen::Vector3d::Zero()});
+      shot = predict_shot(net_, camera, hunter->velocity,
+                          {x.head<3>(), x.segment<3>(3),
+                           with_acceleration ? Eigen::Vector3d(x.segment<3>(6)) : Eigen::Vector3d::Zero()});
+      miss = shot->miss.norm();
+      // The chance the net holds it: the estimate's position uncertainty, grown over the time the
+      // net takes to its closest approach, against the net's opening.
+      if (cfg_.fire_probability > 0.0)
+        probability =
+            hit_probability(shot->miss, estimate_->position_covariance_after(shot->time_s), cfg_.net_radius_m);
     }
 
     if (goal_ && target) {
@@ -296,11 +335,15 @@ class AimPlannerNode final : public Node {
     sp.yaw_rate = reference_->yaw_rate();
     ctx.publish(kSetpoint, std::move(sp));
 
-    if (fire_.update(t, launcher_ready(ctx, t) ? miss : std::nullopt, fire_radius(ctx))) {
+    if (fire_.decide(t, launcher_ready(ctx, t) && worth_a_net(ctx, miss, probability))) {
       ++fire_count_;
       if (!first_fire_) first_fire_ = t;
-      ctx.log().info("fire at t = {:.2f} s: target {}, aim error {:.2f} m, predicted miss {:.2f} m", t, target->id,
-                     error->norm(), *miss);
+      ctx.log().info("fire at t = {:.2f} s: target {}, aim error {:.2f} m, predicted miss {:.2f} m{}", t, target->id,
+                     error->norm(), *miss,
+                     probability ? fmt::format(", probability {:.2f}", *probability) : std::string());
+      shots_.push_back({{"t_s", t},
+                        {"predicted_miss_m", *miss},
+                        {"probability", probability ? nlohmann::json(*probability) : nlohmann::json()}});
       ctx.publish(kFire, msg::NetFire{tracks->stamp, target->id, *error});
     }
   }
@@ -311,10 +354,14 @@ class AimPlannerNode final : public Node {
     return !launcher || (launcher->nets_left != 0 && t >= to_seconds(launcher->ready_at));
   }
 
-  // The last net waits for a better shot than the others.
-  double fire_radius(Context& ctx) const {
+  // Whether this shot is worth a net: by probability when fire_probability is set, else by the
+  // predicted miss; the last net waits for a better shot than the others.
+  bool worth_a_net(Context& ctx, std::optional<double> miss, std::optional<double> probability) const {
     const auto launcher = ctx.get(kLauncher);
-    return launcher && launcher->nets_left == 1 ? cfg_.last_net_radius_m : cfg_.capture_radius_m;
+    const bool last = launcher && launcher->nets_left == 1;
+    if (cfg_.fire_probability > 0.0)
+      return probability && *probability >= (last ? cfg_.last_net_probability : cfg_.fire_probability);
+    return miss && *miss <= (last ? cfg_.last_net_radius_m : cfg_.capture_radius_m);
   }
 
   void finish(Context& ctx) override {
@@ -328,6 +375,7 @@ class AimPlannerNode final : public Node {
                 .quantity("target_frames", target_frames_)
                 .metric("aim_rmse_m", rmse, "m", Better::lower)
                 .quantity("fire_count", fire_count_)
+                .quantity("shots", shots_)
                 .metric("time_to_first_fire_s", first, "s", Better::lower)
                 .metric("holds", holds_, "", Better::lower)
                 .quantity("ground_frames", ground_frames_)
@@ -392,7 +440,8 @@ class AimPlannerNode final : public Node {
   AimPose takeoff_, search_, standoff_;
   Eigen::Vector3d last_target_ = Eigen::Vector3d::Zero();
   std::optional<AimPose> goal_;
-  std::optional<tracking::KalmanTrack> estimate_;
+  std::optional<TargetEstimate> estimate_;
+  nlohmann::json shots_ = nlohmann::json::array();  // each shot: when, its predicted miss and probability
   std::uint64_t target_id_ = 0;
   Eigen::Vector3d goal_velocity_ = Eigen::Vector3d::Zero();
   std::optional<double> last_t_, first_fire_;

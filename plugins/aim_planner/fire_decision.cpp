@@ -1,31 +1,74 @@
 #include "fire_decision.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <kestrel/geometry/frames.hpp>
 #include <limits>
+#include <vector>
 
 namespace kestrel::aim {
 
-double predicted_miss(const net::NetModel& net, const geometry::CameraPose& launcher,
-                      const Eigen::Vector3d& launcher_velocity, const TargetMotion& target) {
+PredictedShot predict_shot(const net::NetModel& net, const geometry::CameraPose& launcher,
+                           const Eigen::Vector3d& launcher_velocity, const TargetMotion& target) {
   const net::NetShot shot = net.fire(0.0, launcher, launcher_velocity);
   const auto& p = net.params();
   // The open window in steps of at most 10 ms: the net moves a few centimetres per step.
   const int steps = std::max(1, static_cast<int>(std::ceil(p.open_for_s / 0.01)));
-  double best = std::numeric_limits<double>::infinity();
+  PredictedShot best{0.0, Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity())};
   for (int i = 0; i <= steps; ++i) {
     const double tau = p.flight_time_s + p.open_for_s * i / steps;
-    best = std::min(best, (net.position(shot, tau) - target.at(tau)).norm());
+    const Eigen::Vector3d miss = target.at(tau) - net.position(shot, tau);
+    if (miss.squaredNorm() < best.miss.squaredNorm()) best = {tau, miss};
   }
   return best;
+}
+
+namespace {
+// Standard normal points from a fixed stream: splitmix64 for uniform numbers, Box-Muller for
+// the normal ones. Written out, not std::normal_distribution, whose output the standard leaves
+// to each library.
+const std::vector<Eigen::Vector3d>& standard_normal_points() {
+  static const std::vector<Eigen::Vector3d> points = [] {
+    std::uint64_t state = 0x6b657374726c;
+    auto uniform = [&] {
+      std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
+      z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+      z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+      z ^= z >> 31;
+      return (static_cast<double>(z >> 11) + 0.5) * 0x1.0p-53;  // in (0, 1)
+    };
+    std::vector<double> normals;
+    while (normals.size() < 3 * 2048) {
+      const double radius = std::sqrt(-2.0 * std::log(uniform())), angle = 2.0 * M_PI * uniform();
+      normals.push_back(radius * std::cos(angle));
+      normals.push_back(radius * std::sin(angle));
+    }
+    std::vector<Eigen::Vector3d> out(2048);
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = {normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]};
+    return out;
+  }();
+  return points;
+}
+}  // namespace
+
+double hit_probability(const Eigen::Vector3d& miss, const Eigen::Matrix3d& covariance, double radius_m) {
+  if (!miss.allFinite() || !covariance.allFinite()) return 0.0;
+  // A square root of the covariance that survives a covariance not quite positive definite.
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(0.5 * (covariance + covariance.transpose()));
+  const Eigen::Matrix3d root = eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal();
+  const auto& points = standard_normal_points();
+  std::size_t inside = 0;
+  for (const Eigen::Vector3d& z : points) inside += (miss + root * z).norm() <= radius_m;
+  return static_cast<double>(inside) / static_cast<double>(points.size());
 }
 
 FireTrigger::FireTrigger(double capture_radius_m, double dwell_s, double cooldown_s)
     : radius_(capture_radius_m), dwell_(dwell_s), cooldown_(cooldown_s) {}
 
-bool FireTrigger::update(double t, std::optional<double> miss_m, double radius_m) {
-  if (!miss_m || !(*miss_m <= radius_m)) {
+bool FireTrigger::decide(double t, bool good_shot) {
+  if (!good_shot) {
     within_since_ = -1.0;
     return false;
   }

@@ -14,10 +14,25 @@ namespace kestrel::aim {
 
 using guidance::TargetMotion;
 
-/// The miss if the net were fired now: the least distance between the net's centre, on the
+/// The shot if the net were fired now: the closest approach between the net's centre, on the
 /// launcher's own ballistics (`net`), and the predicted target, over the time the net is open.
-double predicted_miss(const net::NetModel& net, const geometry::CameraPose& launcher,
-                      const Eigen::Vector3d& launcher_velocity, const TargetMotion& target);
+struct PredictedShot {
+  double time_s = 0.0;                             ///< after the launch
+  Eigen::Vector3d miss = Eigen::Vector3d::Zero();  ///< target minus net centre then (world)
+};
+PredictedShot predict_shot(const net::NetModel& net, const geometry::CameraPose& launcher,
+                           const Eigen::Vector3d& launcher_velocity, const TargetMotion& target);
+
+/// Its distance: the predicted miss.
+inline double predicted_miss(const net::NetModel& net, const geometry::CameraPose& launcher,
+                             const Eigen::Vector3d& launcher_velocity, const TargetMotion& target) {
+  return predict_shot(net, launcher, launcher_velocity, target).miss.norm();
+}
+
+/// The probability that the net holds the target: that the target, at `miss` from the net's
+/// centre with a Gaussian error of `covariance` about it, lies within `radius_m` of the centre.
+/// A fixed set of 2048 standard normal points (no state, the same answer every time).
+double hit_probability(const Eigen::Vector3d& miss, const Eigen::Matrix3d& covariance, double radius_m);
 
 /// Decides when to fire: the predicted miss has stayed within the capture radius for the dwell
 /// time (0: fire the moment it is), and the last shot is at least the cooldown ago.
@@ -28,7 +43,11 @@ class FireTrigger {
   /// fired now.
   bool update(double t, std::optional<double> miss_m) { return update(t, miss_m, radius_); }
   /// The same with another radius for this instant (a tighter one for the last net).
-  bool update(double t, std::optional<double> miss_m, double radius_m);
+  bool update(double t, std::optional<double> miss_m, double radius_m) {
+    return decide(t, miss_m && *miss_m <= radius_m);
+  }
+  /// The trigger itself, on a shot the caller has judged (good: worth a net now).
+  bool decide(double t, bool good_shot);
 
  private:
   double radius_, dwell_, cooldown_;

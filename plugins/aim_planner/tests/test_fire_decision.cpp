@@ -1,4 +1,5 @@
-// The fire decision: the predicted miss on the net's ballistics, and the trigger.
+// The fire decision: the predicted shot on the net's ballistics, its probability, the trigger;
+// and the world-frame target estimate it predicts from.
 #include <gmock/gmock.h>
 
 #include <cmath>
@@ -6,9 +7,14 @@
 #include <random>
 
 #include "fire_decision.hpp"
+#include "target_estimate.hpp"
 
 using namespace kestrel;
 using namespace kestrel::aim;
+
+namespace {
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+}  // namespace
 
 TEST(FireTrigger, FiresAfterTheDwellAndNotAgainWithinTheCooldown) {
   FireTrigger fire(0.5, 0.5, 3.0);
@@ -67,4 +73,65 @@ TEST(PredictedMiss, IsTheLeastDistanceToTheNetWhileItIsOpen) {
   const Eigen::Vector3d side(0.0, 1.0, 0.0);
   EXPECT_NEAR(predicted_miss(net, launcher, side, {open, side, zero}), 0.0, 1e-9);
   EXPECT_NEAR(predicted_miss(net, launcher, side, {open, zero, zero}), 0.4, 1e-9);
+}
+
+TEST(PredictedShot, GivesTheTimeAndTheVectorOfTheClosestApproach) {
+  const net::NetModel net({Eigen::Vector3d(0.0, 1.0, 2.0), 0.4, 0.6, 0.3, 9.81});
+  const auto launcher = geometry::level_camera(Eigen::Vector3d::Zero(), 0.0);
+  const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
+  const net::NetShot shot = net.fire(0.0, launcher, zero);
+  // The net flies in the vertical plane of the launcher's heading (world x, z); a target hovering
+  // 0.2 m beside the point it reaches 0.55 s after the launch is passed then, 0.2 m off.
+  const Eigen::Vector3d beside(0.0, 0.2, 0.0);
+  const PredictedShot s = predict_shot(net, launcher, zero, {net.position(shot, 0.55) + beside, zero, zero});
+  EXPECT_NEAR(s.time_s, 0.55, 1e-9);
+  EXPECT_TRUE(s.miss.isApprox(beside, 1e-9)) << s.miss.transpose();
+}
+
+// Known answers: a certain target is held exactly when its miss is within the radius; a target
+// centred on the net with an isotropic spread sigma is held with the Maxwell distribution's
+// probability of |z| <= R / sigma (R = sigma: erf(1/sqrt 2) - sqrt(2/pi) e^(-1/2) = 0.1987;
+// R = 2 sigma: 0.7385).
+TEST(HitProbability, IsTheShareOfThePredictedDistributionInsideTheNet) {
+  const Eigen::Matrix3d certain = Eigen::Matrix3d::Zero();
+  EXPECT_EQ(hit_probability({0.5, 0.0, 0.0}, certain, 0.6), 1.0);
+  EXPECT_EQ(hit_probability({0.0, 0.7, 0.0}, certain, 0.6), 0.0);
+  const double sigma = 0.3;
+  const Eigen::Matrix3d spread = sigma * sigma * Eigen::Matrix3d::Identity();
+  EXPECT_NEAR(hit_probability(Eigen::Vector3d::Zero(), spread, sigma), 0.1987, 0.02);
+  EXPECT_NEAR(hit_probability(Eigen::Vector3d::Zero(), spread, 2.0 * sigma), 0.7385, 0.02);
+  // Further off, less likely; the same answer every time; a broken estimate never fires.
+  EXPECT_LT(hit_probability({0.4, 0.0, 0.0}, spread, 2.0 * sigma),
+            hit_probability({0.1, 0.0, 0.0}, spread, 2.0 * sigma));
+  EXPECT_EQ(hit_probability({0.2, 0.1, 0.0}, spread, 0.6), hit_probability({0.2, 0.1, 0.0}, spread, 0.6));
+  EXPECT_EQ(hit_probability({kNaN, 0.0, 0.0}, spread, 0.6), 0.0);
+  // Uncertain only across the miss: a spread along z does not move a target that is 0.5 m off in x
+  // further than its spread allows.
+  Eigen::Matrix3d flat = Eigen::Matrix3d::Zero();
+  flat(2, 2) = 0.01;
+  EXPECT_GT(hit_probability({0.5, 0.0, 0.0}, flat, 0.6), 0.99);
+}
+
+// The IMM's prediction grows more uncertain over a net's flight than the steady filter's, and
+// predicting ahead leaves the estimate as it was.
+TEST(TargetEstimate, TheImmsPredictionSpreadsWithItsManoeuvreModel) {
+  TargetFilterConfig ca{TargetFilterConfig::Model::constant_acceleration, 10.0, 1000.0, 0.01, 0.02};
+  TargetFilterConfig imm = ca;
+  imm.model = TargetFilterConfig::Model::imm;
+  TargetEstimate a(Eigen::Vector3d(5, 0, 2), ca), b(Eigen::Vector3d(5, 0, 2), imm);
+  for (int k = 1; k <= 60; ++k) {  // a target flying at 3 m/s, seen at 30 Hz
+    const Eigen::Vector3d z(5.0, 3.0 * k / 30.0, 2.0);
+    a.predict(1.0 / 30.0);
+    b.predict(1.0 / 30.0);
+    a.update(z);
+    b.update(z);
+  }
+  EXPECT_NEAR(a.state()(4), 3.0, 0.1);
+  EXPECT_NEAR(b.state()(4), 3.0, 0.1);
+  const Eigen::VectorXd before = b.state();
+  const Eigen::Matrix3d now = b.covariance().topLeftCorner<3, 3>();
+  const Eigen::Matrix3d ahead = b.position_covariance_after(0.5);
+  EXPECT_GT(ahead.trace(), now.trace());
+  EXPECT_EQ(b.state(), before);
+  EXPECT_GT(ahead.trace(), a.position_covariance_after(0.5).trace());
 }
