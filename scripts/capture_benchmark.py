@@ -36,7 +36,7 @@ import random
 import statistics
 import sys
 
-SHAPES = ["figure8", "line", "random"]
+SHAPES = ["figure8", "line", "random"]  # the default; --shapes adds "jink"
 MAX_INTRUDER_SPEED = 3.0  # m/s: the default band's top, and where the agile scaling starts
 MAX_WIND = 3.0  # m/s
 BAND_SEED_STRIDE = 100000  # band b's seeds start at SEED0 + b * BAND_SEED_STRIDE
@@ -104,6 +104,17 @@ def scenario(seed, band=(0.0, MAX_INTRUDER_SPEED), shapes=SHAPES):
                   # It brakes and turns as a multirotor can: 2 to 6 m/s^2 (a small quadrotor's
                   # few m/s^2 up to a sporty one's).
                   "intruder.line_acceleration_m_s2": f"{line_accel:.3f}"})
+    elif shape == "jink":
+        # Bang-bang jinks at the limit, held 0.5-2 s, in a box as wide as two of its turns.
+        speed, accel = rng.uniform(speed_lo, speed_hi), rng.uniform(2.0, 6.0) if speed_hi <= MAX_INTRUDER_SPEED \
+            else rng.uniform(4.0, 8.0)
+        turn = speed**2 / accel
+        # It overshoots its box's height by up to (v/2)^2 / 2a: the centre is high enough that it
+        # stays above the height gate and 1 m above the ground.
+        centre_height = max(height, 1.5 + speed**2 / (8.0 * accel))
+        s.update({"intruder.random_centre_m": vec([distance, lateral, centre_height]),
+                  "intruder.random_half_extent_m": vec([max(1.0, 0.5 * turn), max(2.0, turn), 0.5]),
+                  "intruder.jink_speed_m_s": f"{speed:.3f}", "intruder.jink_acceleration_m_s2": f"{accel:.3f}"})
     else:
         extent = [rng.uniform(0.3, 1.0), rng.uniform(0.5, 2.0), rng.uniform(0.2, 0.6)]
         speed = rng.uniform(speed_lo, speed_hi)

@@ -9,7 +9,7 @@
 namespace kestrel::intruder {
 
 struct IntruderConfig {
-  enum class Shape { figure8, line, random, file };
+  enum class Shape { figure8, line, random, jink, file };
   enum class AtEnd { hold, repeat };
   Shape shape = Shape::figure8;
   double rate_hz = 100.0;
@@ -30,6 +30,10 @@ struct IntruderConfig {
   double max_speed_m_s = 3.0;
   double max_acceleration_m_s2 = 0.0;
   double random_max_frequency_hz = 0.25;
+  double jink_speed_m_s = 5.0;
+  double jink_acceleration_m_s2 = 4.0;
+  double jink_min_hold_s = 0.5;
+  double jink_max_hold_s = 2.0;
   std::string file;
   AtEnd at_end = AtEnd::repeat;
   double ground_z_m = 0.0;
@@ -48,6 +52,7 @@ class IntruderNode final : public Node {
              {{"figure8", C::Shape::figure8},
               {"line", C::Shape::line},
               {"random", C::Shape::random},
+              {"jink", C::Shape::jink},
               {"file", C::Shape::file}})
         .describe("trajectory");
     c.param("rate_hz", &C::rate_hz).with_unit("Hz").range(1.0, 10000.0).describe("state publication rate");
@@ -81,11 +86,11 @@ class IntruderNode final : public Node {
             "instant turns)");
     c.param("random_centre_m", &C::random_centre_m)
         .with_unit("m")
-        .describe("random: centre of the box it stays in (world)");
+        .describe("random and jink: centre of the box it stays in (world)");
     c.param("random_half_extent_m", &C::random_half_extent_m)
         .with_unit("m")
         .range(0.0, 100.0)
-        .describe("random: half size of that box");
+        .describe("random and jink: half size of that box (jink: it turns back when outside)");
     c.param("max_speed_m_s", &C::max_speed_m_s)
         .renamed_from("max_speed_mps")
         .with_unit("m/s")
@@ -100,6 +105,21 @@ class IntruderNode final : public Node {
         .with_unit("Hz")
         .range(0.03, 10.0)
         .describe("random: the quickest manoeuvre's frequency (its period is the shortest)");
+    c.param("jink_speed_m_s", &C::jink_speed_m_s).with_unit("m/s").range(0.1, 100.0).describe("jink: cruise speed");
+    c.param("jink_acceleration_m_s2", &C::jink_acceleration_m_s2)
+        .with_unit("m/s^2")
+        .range(0.0, 100.0)
+        .describe("jink: the lateral and vertical acceleration of each jink (bang-bang, at this limit)");
+    c.param("jink_min_hold_s", &C::jink_min_hold_s)
+        .with_unit("s")
+        .range(0.01, 60.0)
+        .describe("jink: the shortest time a manoeuvre is held");
+    c.param("jink_max_hold_s", &C::jink_max_hold_s)
+        .with_unit("s")
+        .range(0.01, 60.0)
+        .describe("jink: the longest time a manoeuvre is held (flights last at most 3600 s)");
+    c.rule("jink_min_hold_s <= jink_max_hold_s", {"jink_min_hold_s", "jink_max_hold_s"},
+           [](const C& k) { return k.jink_min_hold_s <= k.jink_max_hold_s; });
     c.param("file", &C::file).describe("file: CSV of t,x,y,z (s, world m)");
     c.choice("at_end", &C::at_end, {{"hold", C::AtEnd::hold}, {"repeat", C::AtEnd::repeat}})
         .describe("line and file: after the end, hold the last point or go again (line: back and forth)");
@@ -107,7 +127,7 @@ class IntruderNode final : public Node {
     c.rule("file is set when shape = file", {"shape", "file"},
            [](const C& k) { return k.shape != C::Shape::file || !k.file.empty(); });
     return NodeSpec("intruder",
-                    "A simulated intruder flying a figure-8, a line, random manoeuvres or a recorded flight")
+                    "A simulated intruder flying a figure-8, a line, random manoeuvres, jinks or a recorded flight")
         .details(
             "Publishes the intruder's world position and velocity. position_camera is given relative to the "
             "reference camera (camera_position_m, camera_yaw_deg), which also places the figure-8: in the plane "
@@ -168,6 +188,11 @@ class IntruderNode final : public Node {
         trajectory_ =
             std::make_unique<RandomManoeuvre>(cfg.random_centre_m, cfg.random_half_extent_m, cfg.max_speed_m_s,
                                               init.seed(), cfg.max_acceleration_m_s2, cfg.random_max_frequency_hz);
+        break;
+      case Shape::jink:
+        trajectory_ =
+            std::make_unique<Jink>(cfg.random_centre_m, cfg.random_half_extent_m, cfg.jink_speed_m_s,
+                                   cfg.jink_acceleration_m_s2, cfg.jink_min_hold_s, cfg.jink_max_hold_s, init.seed());
         break;
       case Shape::file:
         trajectory_ = std::make_unique<RecordedFlight>(cfg.file, repeat);

@@ -78,6 +78,76 @@ State StraightLine::at(double t) const {
   return State{start_ + direction_ * s, direction_ * speed_ * sign};
 }
 
+namespace {
+constexpr double kJinkStep = 0.01;  // s: the grid the jinks are integrated on
+}
+
+Jink::Jink(const Eigen::Vector3d& centre, const Eigen::Vector3d& half_extent, double speed, double max_acceleration,
+           double min_hold, double max_hold, std::uint64_t seed)
+    : centre_(centre),
+      half_extent_(half_extent),
+      speed_(speed),
+      max_acceleration_(max_acceleration),
+      min_hold_(min_hold),
+      max_hold_(std::max(min_hold, max_hold)),
+      rng_(seed) {
+  // It starts at the centre, cruising across the box's long horizontal side.
+  const Eigen::Vector3d heading =
+      half_extent.y() >= half_extent.x() ? Eigen::Vector3d::UnitY() : Eigen::Vector3d::UnitX();
+  samples_.push_back({State{centre, heading * speed}, Eigen::Vector3d::Zero()});
+}
+
+void Jink::extend_to(std::size_t k) const {
+  std::uniform_real_distribution<double> hold(min_hold_, max_hold_);
+  std::uniform_int_distribution<int> sign(-1, 1);  // left, straight, right; down, level, up
+  while (samples_.size() <= k) {
+    Sample& last = samples_.back();
+    const double t = kJinkStep * static_cast<double>(samples_.size() - 1);
+    const State& s = last.state;
+    if (t >= hold_until_) {
+      lateral_ = sign(rng_);
+      vertical_ = sign(rng_);
+      hold_until_ = t + hold(rng_);
+    }
+    // Outside its box it heads back: towards the centre horizontally, and vertically.
+    const Eigen::Vector3d off = s.position - centre_;
+    Eigen::Vector3d horizontal_velocity(s.velocity.x(), s.velocity.y(), 0.0);
+    const Eigen::Vector3d left = Eigen::Vector3d::UnitZ().cross(horizontal_velocity).normalized();
+    double lateral = lateral_, vertical = vertical_;
+    if (std::abs(off.x()) > half_extent_.x() || std::abs(off.y()) > half_extent_.y())
+      if (off.head<2>().dot(horizontal_velocity.head<2>()) > 0.0) lateral = left.dot(-off) >= 0.0 ? 1.0 : -1.0;
+    if (off.z() > half_extent_.z()) vertical = -1.0;
+    if (off.z() < -half_extent_.z()) vertical = 1.0;
+    Eigen::Vector3d a = lateral * max_acceleration_ * left;
+    a.z() = vertical * max_acceleration_;
+    // The climb rate stays within half the speed.
+    const double max_climb = 0.5 * speed_;
+    a.z() = std::clamp(a.z(), (-max_climb - s.velocity.z()) / kJinkStep, (max_climb - s.velocity.z()) / kJinkStep);
+    last.acceleration = a;
+    State next;
+    next.position = s.position + s.velocity * kJinkStep + 0.5 * a * kJinkStep * kJinkStep;
+    next.velocity = s.velocity + a * kJinkStep;
+    // A turn keeps the horizontal speed that the climb leaves.
+    const double vz = std::clamp(next.velocity.z(), -max_climb, max_climb);
+    Eigen::Vector2d vh = next.velocity.head<2>();
+    vh *= std::sqrt(std::max(0.0, speed_ * speed_ - vz * vz)) / std::max(vh.norm(), 1e-9);
+    next.velocity = Eigen::Vector3d(vh.x(), vh.y(), vz);
+    samples_.push_back({next, Eigen::Vector3d::Zero()});
+  }
+}
+
+State Jink::at(double t) const {
+  // Integrated on demand and kept: an hour is 360,000 samples (30 MB), the most it keeps.
+  if (t > 3600.0) throw Error("jink: the flight lasts at most 3600 s (asked for " + std::to_string(t) + " s)");
+  const double clamped = std::max(0.0, t);
+  const auto k = static_cast<std::size_t>(clamped / kJinkStep);
+  extend_to(k + 1);
+  const Sample& s = samples_[k];
+  const double tau = clamped - kJinkStep * static_cast<double>(k);
+  return State{s.state.position + s.state.velocity * tau + 0.5 * s.acceleration * tau * tau,
+               s.state.velocity + s.acceleration * tau};
+}
+
 RandomManoeuvre::RandomManoeuvre(const Eigen::Vector3d& centre, const Eigen::Vector3d& half_extent, double max_speed,
                                  std::uint64_t seed, double max_acceleration, double max_frequency_hz)
     : centre_(centre) {

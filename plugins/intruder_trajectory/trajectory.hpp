@@ -76,6 +76,32 @@ class RandomManoeuvre final : public Trajectory {
   std::vector<Wave> waves_[3];
 };
 
+/// Jinks: a cruise at constant speed, turned by bang-bang lateral and vertical accelerations at
+/// their limit, each held a random time in [min_hold, max_hold]; a multirotor dodging. A turn
+/// keeps the speed (the lateral acceleration is normal to the velocity); the climb rate stays
+/// within half the speed. Leaving its box, it turns and climbs back towards the centre.
+/// Integrated once on a 10 ms grid from a seed, on demand, so that at(t) is a pure function of t.
+class Jink final : public Trajectory {
+ public:
+  Jink(const Eigen::Vector3d& centre, const Eigen::Vector3d& half_extent, double speed, double max_acceleration,
+       double min_hold, double max_hold, std::uint64_t seed);
+  State at(double t) const override;
+
+ private:
+  struct Sample {
+    State state;
+    Eigen::Vector3d acceleration;  ///< held until the next sample
+  };
+  void extend_to(std::size_t k) const;
+
+  Eigen::Vector3d centre_, half_extent_;
+  double speed_, max_acceleration_, min_hold_, max_hold_;
+  mutable std::mt19937_64 rng_;
+  mutable std::vector<Sample> samples_;
+  mutable double lateral_ = 0.0, vertical_ = 0.0;  ///< the current manoeuvre, in units of the limit
+  mutable double hold_until_ = 0.0;
+};
+
 /// Playback of a recorded flight: CSV with a header and rows t,x,y,z (seconds, world metres),
 /// interpolated linearly; holds the last point, or loops.
 class RecordedFlight final : public Trajectory {

@@ -133,6 +133,36 @@ TEST(RandomManoeuvre, KeepsUnderItsAccelerationLimit) {
   EXPECT_GT(unlimited, 5.0);  // the limit did something
 }
 
+// Jinks at 6 m/s and 5 m/s^2: the speed holds, the acceleration stays within its limit on
+// each of the two axes it acts on, it turns back into its box (leaving it by no more than a
+// turn's diameter, 2 v^2 / a), it does jink, and the same seed flies the same path.
+TEST(Jink, CruisesAtItsSpeedTurnsWithinItsLimitAndStaysNearItsBox) {
+  const Eigen::Vector3d centre(8, 0, 3), half(4.0, 6.0, 1.0);
+  const double v = 6.0, a = 5.0, turn = 2.0 * v * v / a;
+  const Jink jink(centre, half, v, a, 0.5, 2.0, 7), same(centre, half, v, a, 0.5, 2.0, 7),
+      other(centre, half, v, a, 0.5, 2.0, 8);
+  double max_accel = 0.0, turned = 0.0;
+  Eigen::Vector3d previous = jink.at(0.0).velocity;
+  for (double t = 0.005; t < 120.0; t += 0.05) {
+    const State s = jink.at(t);
+    EXPECT_NEAR(s.velocity.norm(), v, 0.02) << t;
+    EXPECT_LE(std::abs(s.velocity.z()), 0.5 * v + 1e-9);
+    for (int i = 0; i < 2; ++i) EXPECT_LE(std::abs(s.position[i] - centre[i]), half[i] + turn) << t;
+    EXPECT_LE(std::abs(s.position.z() - centre.z()), half.z() + v * v / (8.0 * a) + 0.05) << t;
+    const Eigen::Vector3d accel = (jink.at(t + 0.002).velocity - jink.at(t - 0.002).velocity) / 0.004;
+    max_accel = std::max(max_accel, accel.norm());
+    turned += std::acos(std::clamp(previous.normalized().dot(s.velocity.normalized()), -1.0, 1.0));
+    previous = s.velocity;
+    expect_near(s.position, same.at(t).position, 0.0);
+  }
+  EXPECT_LE(max_accel, std::sqrt(2.0) * a + 0.1);
+  EXPECT_GT(max_accel, 0.9 * a);
+  EXPECT_GT(turned, 20.0);  // radians over two minutes: it jinks
+  EXPECT_GT((jink.at(30.0).position - other.at(30.0).position).norm(), 0.5);
+  expect_consistent_velocity(jink, 17.305);
+  EXPECT_THROW(jink.at(4000.0), Error);
+}
+
 TEST(RecordedFlight, InterpolatesHoldsAndLoops) {
   const auto file = write_csv("kestrel-flight.csv", "t,x,y,z\n10,0,0,0\n12,2,0,0\n14,2,4,0\n");
   const RecordedFlight hold(file, false);
