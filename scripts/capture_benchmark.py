@@ -36,7 +36,8 @@ import random
 import statistics
 import sys
 
-SHAPES = ["figure8", "line", "random"]  # the default; --shapes adds "jink"
+SHAPES = ["figure8", "line", "random"]  # the default
+ALL_SHAPES = SHAPES + ["jink", "evade"]
 MAX_INTRUDER_SPEED = 3.0  # m/s: the default band's top, and where the agile scaling starts
 MAX_WIND = 3.0  # m/s
 BAND_SEED_STRIDE = 100000  # band b's seeds start at SEED0 + b * BAND_SEED_STRIDE
@@ -115,6 +116,18 @@ def scenario(seed, band=(0.0, MAX_INTRUDER_SPEED), shapes=SHAPES):
         s.update({"intruder.random_centre_m": vec([distance, lateral, centre_height]),
                   "intruder.random_half_extent_m": vec([max(1.0, 0.5 * turn), max(2.0, turn), 0.5]),
                   "intruder.jink_speed_m_s": f"{speed:.3f}", "intruder.jink_acceleration_m_s2": f"{accel:.3f}"})
+    elif shape == "evade":
+        # It sees the hunter: cruises in its box, flees at its top speed within 6 m, weaving, and
+        # breaks across the hunter's line of sight within 2.5 m; its box is two of its turns wide,
+        # high enough that a dive stays above the height gate.
+        speed, accel = rng.uniform(speed_lo, speed_hi), rng.uniform(2.0, 6.0) if speed_hi <= MAX_INTRUDER_SPEED \
+            else rng.uniform(4.0, 8.0)
+        turn = speed**2 / accel
+        s.update({"intruder.random_centre_m": vec([distance, lateral, max(height, 2.0 + speed**2 / (8.0 * accel))]),
+                  "intruder.random_half_extent_m": vec([max(1.5, turn), max(2.0, 2.0 * turn), 0.5]),
+                  "intruder.evade_speed_m_s": f"{speed:.3f}", "intruder.evade_acceleration_m_s2": f"{accel:.3f}",
+                  "intruder.evade_cruise_speed_m_s": f"{min(2.0, 0.5 * speed):.3f}",
+                  "intruder.evade_min_height_m": "1.5"})
     else:
         extent = [rng.uniform(0.3, 1.0), rng.uniform(0.5, 2.0), rng.uniform(0.2, 0.6)]
         speed = rng.uniform(speed_lo, speed_hi)
@@ -183,11 +196,47 @@ def group_figures(runs):
             "first_shot_rate": sum(bool(x.get("first_shot_captured")) for x in runs) / len(runs) if runs else None,
             "median_time_to_capture_s": statistics.median(times) if times else None,
             "median_nets_used": statistics.median(nets) if nets else None,
+            **missed_shots(runs),
             "first_seen_closer_than_4m": sum(r < 4.0 for r in seen) / len(seen) if seen else None}
 
 
+def paired_shots(launched, ordered):
+    """Each launched shot (the net's log) with the aim's prediction for it (its order's log), paired
+    by time: the predicted miss and the probability beside the closest approach."""
+    shots = []
+    for shot in launched:
+        order = min(ordered, key=lambda o: abs(o["t_s"] - shot["t_s"]), default=None)
+        if order is not None and abs(order["t_s"] - shot["t_s"]) < 0.1:
+            shot = {**shot, "predicted_miss_m": order.get("predicted_miss_m"), "probability": order.get("probability")}
+        shots.append(shot)
+    return shots
+
+
+def probability_calibration(runs, edges=(0.0, 0.2, 0.4, 0.6, 0.8, 1.0001)):
+    """How often shots fired at each predicted probability caught: per bin, shots and hits (a
+    calibrated probability catches as often as it says)."""
+    bins = []
+    for lo, hi in zip(edges, edges[1:]):
+        shots = [(s, x["net_radius_m"]) for x in runs for s in x.get("shots", [])
+                 if s.get("probability") is not None and s.get("closest_m") is not None and lo <= s["probability"] < hi]
+        bins.append({"probability": f"{lo:.1f}-{min(hi, 1.0):.1f}", "shots": len(shots),
+                     "hits": sum(s["closest_m"] <= radius for s, radius in shots)})
+    return [b for b in bins if b["shots"]]
+
+
+def missed_shots(runs):
+    """The shots that missed, by cause: lost to the intruder's manoeuvre while the net flew (it would
+    have been caught flying straight on at its velocity at the shot), or to the aim (missed even so)."""
+    missed = [s for x in runs for s in x.get("shots", []) if s.get("closest_m") is not None
+              and s["closest_m"] > x["net_radius_m"]]
+    by_manoeuvre = sum(s.get("closest_straight_m") is not None and s["closest_straight_m"] <= x["net_radius_m"]
+                       for x in runs for s in x.get("shots", []) if s in missed)
+    return {"shots": sum(len(x.get("shots", [])) for x in runs), "missed_shots": len(missed),
+            "missed_by_manoeuvre": by_manoeuvre, "missed_by_aim": len(missed) - by_manoeuvre}
+
+
 def shape_order(shape):
-    return SHAPES.index(shape) if shape in SHAPES else len(SHAPES)
+    return ALL_SHAPES.index(shape) if shape in ALL_SHAPES else len(ALL_SHAPES)
 
 
 def summarise(out, label, sweep_dirs, bands=None, seed0=1):
@@ -202,12 +251,15 @@ def summarise(out, label, sweep_dirs, bands=None, seed0=1):
                 continue
             r = json.load(open(report_file))
             c = r.get("control", {})
-            shape = r["graph"]["resolved"]["nodes"]["intruder"]["params"]["shape"]
+            nodes = r["graph"]["resolved"]["nodes"]
+            shape = nodes["intruder"]["params"]["shape"]
             runs.append({"seed": seed, "shape": shape, "captured": c.get("captured") is True,
                          "first_shot_captured": c.get("first_shot_captured") is True,
                          "time_to_capture_s": c.get("time_to_capture_s"), "aim_rmse_m": c.get("aim_rmse_m"),
                          "fire_count": c.get("fire_count"),
                          "first_seen_range_m": r.get("aim", {}).get("first_seen_range_m"),
+                         "shots": paired_shots(c.get("shots", []), r.get("aim", {}).get("shots", [])),
+                         "net_radius_m": nodes.get("net", {}).get("params", {}).get("radius_m", 0.6),
                          "cause": None if c.get("captured") else failure_cause(r)})
     runs.sort(key=lambda x: x["seed"])
     caught = [x for x in runs if x["captured"]]
@@ -221,6 +273,8 @@ def summarise(out, label, sweep_dirs, bands=None, seed0=1):
         "failures": [{"seed": x["seed"], "cause": x["cause"]} for x in runs if not x["captured"]],
         "first_shot_rate": group_figures(runs)["first_shot_rate"],
         "first_seen_closer_than_4m": group_figures(runs)["first_seen_closer_than_4m"],
+        **missed_shots(runs),
+        "probability_calibration": probability_calibration(runs),
         "by_shape": {s: {"runs": sum(x["shape"] == s for x in runs),
                          "captured": sum(x["shape"] == s and x["captured"] for x in runs)}
                      for s in sorted({x["shape"] for x in runs}, key=shape_order)},
@@ -252,15 +306,18 @@ def markdown(summaries, scenarios_file):
     if any("by_band" in s for s in summaries):
         lines += ["", "## By intruder top speed", "",
                   "Rates with their Wilson 95 % interval; first shot: the first net caught it; seen < 4 m: the target "
-                  "was first seen closer than 4 m.", "",
+                  "was first seen closer than 4 m; missed shots: lost to the intruder's manoeuvre while the net flew "
+                  "(flying straight on it would have been caught) + lost to the aim.", "",
                   "| camera | band [m/s] | runs | captured | rate | 95 % interval | first shot | median time [s] | "
-                  "median nets | seen < 4 m |", "|---|---|---:|---:|---:|---|---:|---:|---:|---:|"]
+                  "median nets | seen < 4 m | shots | missed: manoeuvre + aim |",
+                  "|---|---|---:|---:|---:|---|---:|---:|---:|---:|---:|---|"]
         for s in summaries:
             for band, b in s.get("by_band", {}).items():
                 lines.append(f"| {s['camera']} | {band} | {b['runs']} | {b['captured']} | {f(b['rate'], '.1%')} | "
                              f"{f(b['wilson_low'], '.1%')} to {f(b['wilson_high'], '.1%')} | "
                              f"{f(b['first_shot_rate'], '.1%')} | {f(b['median_time_to_capture_s'], '.1f')} | "
-                             f"{f(b['median_nets_used'], 'g')} | {f(b['first_seen_closer_than_4m'], '.0%')} |")
+                             f"{f(b['median_nets_used'], 'g')} | {f(b['first_seen_closer_than_4m'], '.0%')} | "
+                             f"{b['shots']} | {b['missed_by_manoeuvre']} + {b['missed_by_aim']} |")
     for s in summaries:
         lines += ["", f"## {s['camera']}: by shape", "", "| shape | runs | captured |", "|---|---:|---:|"]
         for shape, v in s["by_shape"].items():
@@ -315,7 +372,10 @@ def main(argv):
     a = parser.parse_args(argv[1:])
     if a.command == "scenarios":
         bands = parse_bands(a.bands) if a.bands else [(0.0, MAX_INTRUDER_SPEED)]
-        write_scenarios(a.n, a.seed0, a.file, bands, a.shapes.split(","))
+        shapes = a.shapes.split(",")
+        if unknown := [x for x in shapes if x not in ALL_SHAPES]:
+            raise SystemExit(f"unknown shape(s) {', '.join(unknown)}: choose from {', '.join(ALL_SHAPES)}")
+        write_scenarios(a.n, a.seed0, a.file, bands, shapes)
     elif a.command == "summarise":
         summarise(a.out, a.label, a.sweep_dirs, parse_bands(a.bands) if a.bands else None, a.seed0)
     elif a.command == "combine":

@@ -31,7 +31,7 @@ using guidance::AimReference;
 
 struct AimPlannerConfig {
   enum class WhenLost { hold, search, back_off };
-  enum class ShotPrediction { constant_velocity, constant_acceleration };
+  enum class ShotPrediction { constant_velocity, constant_acceleration, model };
   Eigen::Vector3d aim_point_m{0.0, 1.0, 2.0};
   Eigen::Vector3d camera_offset_m{0.1, 0.0, 0.0};
   double gain_1_s = 1.0;
@@ -46,7 +46,8 @@ struct AimPlannerConfig {
   double target_q = 1.0;
   double target_r = 1.0;
   TargetFilterConfig::Model target_filter = TargetFilterConfig::Model::constant_acceleration;
-  double target_q_manoeuvre = 1000.0;
+  double target_q_velocity = 1.0;
+  double target_q_turn = 10.0;
   double target_switch_probability = 0.01;
   WhenLost when_lost = WhenLost::hold;
   double search_yaw_rate_deg_s = 20.0;
@@ -129,14 +130,22 @@ class AimPlannerNode final : public Node {
         .range(1e-9, 1e6)
         .describe("world-frame target estimate: measurement noise");
     c.choice("target_filter", &C::target_filter,
-             {{"ca", TargetFilterConfig::Model::constant_acceleration}, {"imm", TargetFilterConfig::Model::imm}})
+             {{"cv", TargetFilterConfig::Model::constant_velocity},
+              {"ca", TargetFilterConfig::Model::constant_acceleration},
+              {"imm", TargetFilterConfig::Model::imm}})
         .describe(
-            "world-frame target estimate: a constant-acceleration Kalman filter (q = target_q), or an IMM of a steady "
-            "(target_q) and a manoeuvring (target_q_manoeuvre) one");
-    c.param("target_q_manoeuvre", &C::target_q_manoeuvre)
+            "world-frame target estimate: a constant-acceleration Kalman filter (q = target_q), a constant-velocity "
+            "one "
+            "(target_q_velocity), or an IMM of constant velocity, constant acceleration and a coordinated turn "
+            "(target_q_turn)");
+    c.param("target_q_velocity", &C::target_q_velocity)
+        .with_unit("m^2/s^3")
+        .range(0.0, 1e7)
+        .describe("cv, imm: the constant-velocity model's white-noise acceleration intensity");
+    c.param("target_q_turn", &C::target_q_turn)
         .with_unit("m^2/s^5")
         .range(0.0, 1e7)
-        .describe("imm: process noise (jerk) intensity of the manoeuvre model");
+        .describe("imm: the coordinated-turn model's white-noise jerk intensity");
     c.param("target_switch_probability", &C::target_switch_probability)
         .range(0.0, 0.5)
         .describe("imm: chance per frame that the target changes model");
@@ -162,10 +171,13 @@ class AimPlannerNode final : public Node {
         .range(0.01, 10.0)
         .describe("fire when |x_E^d - x_E| stays below this (the net's capture radius)");
     c.choice("shot_prediction", &C::shot_prediction,
-             {{"cv", C::ShotPrediction::constant_velocity}, {"ca", C::ShotPrediction::constant_acceleration}})
+             {{"cv", C::ShotPrediction::constant_velocity},
+              {"ca", C::ShotPrediction::constant_acceleration},
+              {"model", C::ShotPrediction::model}})
         .describe(
-            "the target's motion while the net flies, for the predicted miss: constant velocity, or the "
-            "estimate's acceleration held");
+            "the target's motion while the net flies, for the predicted miss: constant velocity, the estimate's "
+            "acceleration held, or the estimate's own model (imm: each model's prediction by its probability, the "
+            "coordinated turn's among them)");
     c.param("fire_probability", &C::fire_probability)
         .range(0.0, 1.0)
         .describe(
@@ -264,8 +276,9 @@ class AimPlannerNode final : public Node {
       const Eigen::Vector3d intruder = camera.to_world(in_camera);
       if (!first_seen_range_) first_seen_range_ = in_camera.norm();
       if (!estimate_ || target->id != target_id_) {
-        estimate_.emplace(intruder, TargetFilterConfig{cfg_.target_filter, cfg_.target_q, cfg_.target_q_manoeuvre,
-                                                       cfg_.target_switch_probability, cfg_.target_r});
+        estimate_.emplace(
+            intruder, TargetFilterConfig{cfg_.target_filter, cfg_.target_q, cfg_.target_q_velocity, cfg_.target_q_turn,
+                                         cfg_.target_switch_probability, cfg_.target_r});
         target_id_ = target->id;
         guidance_->reset();
       } else {
@@ -281,13 +294,7 @@ class AimPlannerNode final : public Node {
       error = cfg_.aim_point_m - in_camera;
       ++target_frames_;
       squared_error_ += error->squaredNorm();
-      // The miss if the net were fired now, on the launcher's ballistics, against the target
-      // predicted over the time the net is open (shot_prediction: at constant velocity by default;
-      // the estimate's acceleration, extrapolated that far, is noisier at low speeds).
-      const bool with_acceleration = cfg_.shot_prediction == AimPlannerConfig::ShotPrediction::constant_acceleration;
-      shot = predict_shot(net_, camera, hunter->velocity,
-                          {x.head<3>(), x.segment<3>(3),
-                           with_acceleration ? Eigen::Vector3d(x.segment<3>(6)) : Eigen::Vector3d::Zero()});
+      shot = predict_target_shot(camera, hunter->velocity, x);
       miss = shot->miss.norm();
       // The chance the net holds it: the estimate's position uncertainty, grown over the time the
       // net takes to its closest approach, against the net's opening.
@@ -341,11 +348,27 @@ class AimPlannerNode final : public Node {
       ctx.log().info("fire at t = {:.2f} s: target {}, aim error {:.2f} m, predicted miss {:.2f} m{}", t, target->id,
                      error->norm(), *miss,
                      probability ? fmt::format(", probability {:.2f}", *probability) : std::string());
-      shots_.push_back({{"t_s", t},
-                        {"predicted_miss_m", *miss},
-                        {"probability", probability ? nlohmann::json(*probability) : nlohmann::json()}});
+      nlohmann::json record{{"t_s", t},
+                            {"predicted_miss_m", *miss},
+                            {"probability", probability ? nlohmann::json(*probability) : nlohmann::json()}};
+      if (const auto mu = estimate_->model_probabilities(); !mu.empty()) record["model_probabilities"] = mu;
+      shots_.push_back(std::move(record));
       ctx.publish(kFire, msg::NetFire{tracks->stamp, target->id, *error});
     }
+  }
+
+  // The miss if the net were fired now, on the launcher's ballistics, against the target predicted
+  // over the time the net is open (shot_prediction: at constant velocity by default; the
+  // estimate's acceleration, extrapolated that far, is noisier at low speeds).
+  PredictedShot predict_target_shot(const geometry::CameraPose& camera, const Eigen::Vector3d& hunter_velocity,
+                                    const Eigen::VectorXd& x) const {
+    using P = AimPlannerConfig::ShotPrediction;
+    if (cfg_.shot_prediction == P::model)
+      return predict_shot(net_, camera, hunter_velocity, [&](double tau) { return estimate_->position_after(tau); });
+    const bool with_acceleration = cfg_.shot_prediction == P::constant_acceleration;
+    return predict_shot(net_, camera, hunter_velocity,
+                        TargetMotion{x.head<3>(), x.segment<3>(3),
+                                     with_acceleration ? Eigen::Vector3d(x.segment<3>(6)) : Eigen::Vector3d::Zero()});
   }
 
   // The launcher (when connected) fires only when loaded and not reloading.

@@ -11,7 +11,8 @@
 namespace kestrel::aim {
 
 PredictedShot predict_shot(const net::NetModel& net, const geometry::CameraPose& launcher,
-                           const Eigen::Vector3d& launcher_velocity, const TargetMotion& target) {
+                           const Eigen::Vector3d& launcher_velocity,
+                           const std::function<Eigen::Vector3d(double)>& target_at) {
   const net::NetShot shot = net.fire(0.0, launcher, launcher_velocity);
   const auto& p = net.params();
   // The open window in steps of at most 10 ms: the net moves a few centimetres per step.
@@ -19,7 +20,7 @@ PredictedShot predict_shot(const net::NetModel& net, const geometry::CameraPose&
   PredictedShot best{0.0, Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity())};
   for (int i = 0; i <= steps; ++i) {
     const double tau = p.flight_time_s + p.open_for_s * i / steps;
-    const Eigen::Vector3d miss = target.at(tau) - net.position(shot, tau);
+    const Eigen::Vector3d miss = target_at(tau) - net.position(shot, tau);
     if (miss.squaredNorm() < best.miss.squaredNorm()) best = {tau, miss};
   }
   return best;

@@ -4,6 +4,7 @@
 // net's radius.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <functional>
 #include <kestrel/geometry/frames.hpp>
 #include <kestrel/guidance/target_motion.hpp>
 #include <optional>
@@ -21,7 +22,13 @@ struct PredictedShot {
   Eigen::Vector3d miss = Eigen::Vector3d::Zero();  ///< target minus net centre then (world)
 };
 PredictedShot predict_shot(const net::NetModel& net, const geometry::CameraPose& launcher,
-                           const Eigen::Vector3d& launcher_velocity, const TargetMotion& target);
+                           const Eigen::Vector3d& launcher_velocity,
+                           const std::function<Eigen::Vector3d(double)>& target_at);
+/// The same against a target at constant acceleration.
+inline PredictedShot predict_shot(const net::NetModel& net, const geometry::CameraPose& launcher,
+                                  const Eigen::Vector3d& launcher_velocity, const TargetMotion& target) {
+  return predict_shot(net, launcher, launcher_velocity, [&](double tau) { return target.at(tau); });
+}
 
 /// Its distance: the predicted miss.
 inline double predicted_miss(const net::NetModel& net, const geometry::CameraPose& launcher,

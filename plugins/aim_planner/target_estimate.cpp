@@ -5,8 +5,15 @@ namespace kestrel::aim {
 namespace {
 std::variant<tracking::KalmanTrack, tracking::ImmTrack> make_filter(const Eigen::Vector3d& z,
                                                                     const TargetFilterConfig& k) {
+  using tracking::MotionModel;
   if (k.model == TargetFilterConfig::Model::imm)
-    return tracking::ImmTrack(z, tracking::ImmConfig{k.q, k.q_manoeuvre, k.switch_probability, k.r, 1.0});
+    return tracking::ImmTrack(z,
+                              {{MotionModel::constant_velocity, k.q_velocity},
+                               {MotionModel::constant_acceleration, k.q},
+                               {MotionModel::coordinated_turn, k.q_turn}},
+                              k.switch_probability, k.r, 1.0);
+  if (k.model == TargetFilterConfig::Model::constant_velocity)
+    return tracking::ImmTrack(z, {{MotionModel::constant_velocity, k.q_velocity}}, 0.0, k.r, 1.0);
   return tracking::KalmanTrack(z, tracking::KalmanConfig{k.q, k.r, 1.0});
 }
 }  // namespace
@@ -35,6 +42,18 @@ Eigen::Matrix3d TargetEstimate::position_covariance_after(double tau) const {
   if (tau > 0.0) std::visit([&](auto& f) { f.predict(tau); }, ahead);
   return std::visit([](const auto& f) { return Eigen::Matrix3d(f.covariance().template topLeftCorner<3, 3>()); },
                     ahead);
+}
+
+Eigen::Vector3d TargetEstimate::position_after(double tau) const {
+  if (const auto* imm = std::get_if<tracking::ImmTrack>(&filter_)) return imm->predicted_state(tau).head<3>();
+  const tracking::State x = std::get<tracking::KalmanTrack>(filter_).state();
+  return (tracking::transition(tau) * x).head<3>();
+}
+
+std::vector<double> TargetEstimate::model_probabilities() const {
+  if (const auto* imm = std::get_if<tracking::ImmTrack>(&filter_); imm && imm->models().size() > 1)
+    return imm->model_probabilities();
+  return {};
 }
 
 }  // namespace kestrel::aim

@@ -1,20 +1,23 @@
 #pragma once
 // The aim's estimate of its target in the world frame, from what was seen of it there: a
-// constant-acceleration Kalman filter (`ca`, the paper's model) or an IMM of a steady and a
-// manoeuvring one (`imm`, kestrel/tracking/imm_filter.hpp), and how uncertain its prediction
-// grows over the time a net flies.
+// constant-acceleration Kalman filter (`ca`, the paper's model), a constant-velocity one (`cv`),
+// or an IMM of constant velocity, constant acceleration and a coordinated turn (`imm`,
+// kestrel/tracking/imm_filter.hpp), and how uncertain its prediction grows over the time a net
+// flies.
 #include <Eigen/Core>
 #include <kestrel/tracking/imm_filter.hpp>
 #include <kestrel/tracking/kalman_filter.hpp>
 #include <variant>
+#include <vector>
 
 namespace kestrel::aim {
 
 struct TargetFilterConfig {
-  enum class Model { constant_acceleration, imm };
+  enum class Model { constant_velocity, constant_acceleration, imm };
   Model model = Model::constant_acceleration;
-  double q = 1.0;               ///< m^2/s^5: the jerk intensity (imm: of its steady model)
-  double q_manoeuvre = 1000.0;  ///< m^2/s^5: imm: of its manoeuvre model
+  double q = 1.0;           ///< m^2/s^5: the constant-acceleration model's jerk intensity
+  double q_velocity = 1.0;  ///< m^2/s^3: the constant-velocity model's acceleration intensity
+  double q_turn = 10.0;     ///< m^2/s^5: imm: the coordinated turn's jerk intensity
   double switch_probability = 0.01;
   double r = 1.0;  ///< m^2: the detections' variance
 };
@@ -29,6 +32,11 @@ class TargetEstimate {
   Eigen::MatrixXd covariance() const;
   /// The position's covariance predicted `tau` seconds ahead (this estimate is left as it is).
   Eigen::Matrix3d position_covariance_after(double tau) const;
+  /// The position predicted `tau` seconds ahead by the estimate's own model (imm: each model's
+  /// prediction weighted by its probability now).
+  Eigen::Vector3d position_after(double tau) const;
+  /// The imm's model probabilities (cv, ca, ct); empty for a single model.
+  std::vector<double> model_probabilities() const;
 
  private:
   std::variant<tracking::KalmanTrack, tracking::ImmTrack> filter_;

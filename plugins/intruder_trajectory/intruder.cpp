@@ -2,14 +2,16 @@
 // ground truth at a fixed rate.
 #include <kestrel/messages/ground_truth.hpp>
 #include <kestrel/messages/net_capture.hpp>
+#include <kestrel/messages/vehicle_state.hpp>
 #include <kestrel/plugin.hpp>
 
+#include "evader.hpp"
 #include "trajectory.hpp"
 
 namespace kestrel::intruder {
 
 struct IntruderConfig {
-  enum class Shape { figure8, line, random, jink, file };
+  enum class Shape { figure8, line, random, jink, evade, file };
   enum class AtEnd { hold, repeat };
   Shape shape = Shape::figure8;
   double rate_hz = 100.0;
@@ -34,7 +36,17 @@ struct IntruderConfig {
   double jink_acceleration_m_s2 = 4.0;
   double jink_min_hold_s = 0.5;
   double jink_max_hold_s = 2.0;
+  double evade_cruise_speed_m_s = 2.0;
+  double evade_speed_m_s = 6.0;
+  double evade_acceleration_m_s2 = 6.0;
+  double evade_flee_radius_m = 6.0;
+  double evade_break_radius_m = 2.5;
+  double evade_weave_period_s = 1.5;
+  double evade_min_height_m = 1.0;
   std::string file;
+  Eigen::Vector3d file_offset_m{0.0, 0.0, 0.0};
+  double file_yaw_deg = 0.0;
+  double file_time_scale = 1.0;
   AtEnd at_end = AtEnd::repeat;
   double ground_z_m = 0.0;
 };
@@ -43,6 +55,7 @@ class IntruderNode final : public Node {
  public:
   static constexpr Input<msg::GroundTruth> kAlso{"also"};
   static constexpr Input<msg::NetCapture> kCaptured{"captured"};
+  static constexpr Input<msg::VehicleState> kHunter{"hunter"};
   static constexpr Output<msg::GroundTruth> kTruth{"truth"};
 
   static NodeSpec spec() {
@@ -53,6 +66,7 @@ class IntruderNode final : public Node {
               {"line", C::Shape::line},
               {"random", C::Shape::random},
               {"jink", C::Shape::jink},
+              {"evade", C::Shape::evade},
               {"file", C::Shape::file}})
         .describe("trajectory");
     c.param("rate_hz", &C::rate_hz).with_unit("Hz").range(1.0, 10000.0).describe("state publication rate");
@@ -120,22 +134,66 @@ class IntruderNode final : public Node {
         .describe("jink: the longest time a manoeuvre is held (flights last at most 3600 s)");
     c.rule("jink_min_hold_s <= jink_max_hold_s", {"jink_min_hold_s", "jink_max_hold_s"},
            [](const C& k) { return k.jink_min_hold_s <= k.jink_max_hold_s; });
+    c.param("evade_cruise_speed_m_s", &C::evade_cruise_speed_m_s)
+        .with_unit("m/s")
+        .range(0.0, 100.0)
+        .describe("evade: speed between random waypoints in its box (random_centre_m, random_half_extent_m)");
+    c.param("evade_speed_m_s", &C::evade_speed_m_s)
+        .with_unit("m/s")
+        .range(0.1, 100.0)
+        .describe("evade: top speed, fleeing and breaking");
+    c.param("evade_acceleration_m_s2", &C::evade_acceleration_m_s2)
+        .with_unit("m/s^2")
+        .range(0.1, 100.0)
+        .describe("evade: acceleration limit");
+    c.param("evade_flee_radius_m", &C::evade_flee_radius_m)
+        .with_unit("m")
+        .range(0.0, 1000.0)
+        .describe("evade: with the hunter this close, it flees at top speed, weaving");
+    c.param("evade_break_radius_m", &C::evade_break_radius_m)
+        .with_unit("m")
+        .range(0.0, 1000.0)
+        .describe("evade: with the hunter this close, it breaks hard across the hunter's line of sight");
+    c.param("evade_weave_period_s", &C::evade_weave_period_s)
+        .with_unit("s")
+        .range(0.1, 60.0)
+        .describe("evade: one weave left and right while fleeing");
+    c.param("evade_min_height_m", &C::evade_min_height_m)
+        .with_unit("m")
+        .range(-1000.0, 1000.0)
+        .describe("evade: it never flies lower (world z)");
+    c.rule("evade_break_radius_m <= evade_flee_radius_m", {"evade_break_radius_m", "evade_flee_radius_m"},
+           [](const C& k) { return k.evade_break_radius_m <= k.evade_flee_radius_m; });
     c.param("file", &C::file).describe("file: CSV of t,x,y,z (s, world m)");
+    c.param("file_offset_m", &C::file_offset_m)
+        .with_unit("m")
+        .describe("file: moves the recorded flight by this, after turning it (world = R(file_yaw_deg) p + offset)");
+    c.param("file_yaw_deg", &C::file_yaw_deg)
+        .with_unit("deg")
+        .range(-360.0, 360.0)
+        .describe("file: turns the recorded flight about the world's z axis through the origin");
+    c.param("file_time_scale", &C::file_time_scale)
+        .range(0.01, 100.0)
+        .describe("file: plays the recording this many times as fast (2: twice the speed, half the time)");
     c.choice("at_end", &C::at_end, {{"hold", C::AtEnd::hold}, {"repeat", C::AtEnd::repeat}})
         .describe("line and file: after the end, hold the last point or go again (line: back and forth)");
     c.param("ground_z_m", &C::ground_z_m).with_unit("m").describe("height of the ground a caught intruder falls to");
     c.rule("file is set when shape = file", {"shape", "file"},
            [](const C& k) { return k.shape != C::Shape::file || !k.file.empty(); });
     return NodeSpec("intruder",
-                    "A simulated intruder flying a figure-8, a line, random manoeuvres, jinks or a recorded flight")
+                    "A simulated intruder flying a figure-8, a line, random manoeuvres, jinks, evasions of its hunter "
+                    "or a recorded flight")
         .details(
             "Publishes the intruder's world position and velocity. position_camera is given relative to the "
             "reference camera (camera_position_m, camera_yaw_deg), which also places the figure-8: in the plane "
             "normal to that camera's optical axis, distance_m in front of it. A camera model that moves "
-            "republishes ground truth in its own frame.")
+            "republishes ground truth in its own frame. `evade` reacts to the hunter's true state on `hunter` (a "
+            "delayed edge: the hunter reacts to it in turn); unconnected, it only cruises.")
         .input(kAlso, "other intruders' truth, published together with this one (chain intruders to fly several)",
                {.trigger = Trigger::latest, .optional = true})
         .input(kCaptured, "a net caught an intruder: if it is this one, it stops flying and falls to the ground",
+               {.trigger = Trigger::latest, .optional = true})
+        .input(kHunter, "evade: the hunter's true state, which it evades",
                {.trigger = Trigger::latest, .optional = true})
         .output(kTruth, "the intruder's true state (and those arriving on `also`)")
         .config(std::move(c));
@@ -144,7 +202,7 @@ class IntruderNode final : public Node {
   explicit IntruderNode(NodeInit& init) : IntruderNode(init, init.config<IntruderConfig>()) {}
 
   void tick(Context& ctx) override {
-    const State s = caught(ctx) ? falling(to_seconds(ctx.now())) : trajectory_->at(start_ + to_seconds(ctx.now()));
+    const State s = caught(ctx) ? falling(to_seconds(ctx.now())) : flying(ctx, start_ + to_seconds(ctx.now()));
     msg::GroundTruth truth;
     truth.stamp = ctx.now();
     msg::GroundTruthObject object;
@@ -194,11 +252,26 @@ class IntruderNode final : public Node {
             std::make_unique<Jink>(cfg.random_centre_m, cfg.random_half_extent_m, cfg.jink_speed_m_s,
                                    cfg.jink_acceleration_m_s2, cfg.jink_min_hold_s, cfg.jink_max_hold_s, init.seed());
         break;
+      case Shape::evade:
+        evader_.emplace(cfg.random_centre_m,
+                        EvaderParams{cfg.random_centre_m, cfg.random_half_extent_m, cfg.evade_cruise_speed_m_s,
+                                     cfg.evade_speed_m_s, cfg.evade_acceleration_m_s2, cfg.evade_flee_radius_m,
+                                     cfg.evade_break_radius_m, cfg.evade_weave_period_s, cfg.evade_min_height_m},
+                        init.seed());
+        break;
       case Shape::file:
-        trajectory_ = std::make_unique<RecordedFlight>(cfg.file, repeat);
+        trajectory_ = std::make_unique<Placed>(std::make_unique<RecordedFlight>(cfg.file, repeat), cfg.file_offset_m,
+                                               cfg.file_yaw_deg * M_PI / 180.0, cfg.file_time_scale);
         break;
     }
     init.set_rate(cfg.rate_hz);
+  }
+
+  State flying(Context& ctx, double t) {
+    if (!evader_) return trajectory_->at(t);
+    std::optional<Eigen::Vector3d> hunter;
+    if (const auto h = ctx.get(kHunter)) hunter = h->position;
+    return evader_->step(t, hunter);
   }
 
   // Caught in a net (a capture for this id has arrived): tangled, it drops from where it was caught.
@@ -227,6 +300,7 @@ class IntruderNode final : public Node {
   Eigen::Vector3d caught_where_ = Eigen::Vector3d::Zero();
   geometry::CameraPose camera_;
   std::unique_ptr<Trajectory> trajectory_;
+  std::optional<Evader> evader_;  // evade: flown step by step against the hunter
 };
 KESTREL_REGISTER_NODE(IntruderNode)
 

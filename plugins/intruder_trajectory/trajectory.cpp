@@ -1,5 +1,6 @@
 #include "trajectory.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -238,6 +239,17 @@ State RecordedFlight::at(double t) const {
   const double span = times_[hi] - times_[lo];
   const double f = (local - times_[lo]) / span;
   return State{points_[lo] + f * (points_[hi] - points_[lo]), (points_[hi] - points_[lo]) / span};
+}
+
+Placed::Placed(std::unique_ptr<Trajectory> inner, const Eigen::Vector3d& offset, double yaw, double time_scale)
+    : inner_(std::move(inner)),
+      rotation_(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix()),
+      offset_(offset),
+      time_scale_(time_scale) {}
+
+State Placed::at(double t) const {
+  const State s = inner_->at(time_scale_ * t);
+  return {rotation_ * s.position + offset_, time_scale_ * (rotation_ * s.velocity)};
 }
 
 }  // namespace kestrel::intruder

@@ -121,4 +121,19 @@ class RecordedFlight final : public Trajectory {
   bool loop_;
 };
 
+/// Another trajectory placed in the world: turned by `yaw` (radians, about the world's z axis
+/// through the origin), then moved by `offset`, and flown `time_scale` times as fast
+/// (position(t) = R p(time_scale t) + offset; velocities scale with it).
+class Placed final : public Trajectory {
+ public:
+  Placed(std::unique_ptr<Trajectory> inner, const Eigen::Vector3d& offset, double yaw, double time_scale);
+  State at(double t) const override;
+
+ private:
+  std::unique_ptr<Trajectory> inner_;
+  Eigen::Matrix3d rotation_;
+  Eigen::Vector3d offset_;
+  double time_scale_;
+};
+
 }  // namespace kestrel::intruder

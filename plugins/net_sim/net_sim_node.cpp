@@ -105,9 +105,11 @@ class NetSimNode final : public Node {
         return;
       }
       ready_at_ = t + cfg_.reload_s;
-      shots_.push_back({model_.fire(t, launcher, hunter->velocity), fire_times_.size()});
+      const NetShot shot = model_.fire(t, launcher, hunter->velocity);
+      shots_.push_back({shot, fire_times_.size()});
       fire_times_.push_back(t);
       closest_.push_back(std::numeric_limits<double>::infinity());
+      closest_straight_.push_back(closest_if_straight(shot));
       if (!first_fire_) first_fire_ = t;
       publish_launcher(ctx, ctx.now());
       return;
@@ -140,6 +142,7 @@ class NetSimNode final : public Node {
           break;
         }
       previous_ = {tt, intruder->position_world};
+      previous_velocity_ = intruder->velocity_world;
       std::erase_if(shots_, [&](const auto& s) { return model_.spent(s.first, tt); });
     }
   }
@@ -190,13 +193,29 @@ class NetSimNode final : public Node {
                                             from_seconds(std::max(ready_at_, 0.0))});
   }
 
-  // Each shot: when, and how near the net's centre came to the intruder while open (null: the
-  // run ended or the intruder was caught by an earlier shot before it opened).
+  // How near the open net would have come to the intruder had it flown on at its true velocity at
+  // the shot: a miss that this would have caught was lost to the intruder's manoeuvre while the
+  // net flew, not to the aim (stops at the first catch, as the net does; inf: nothing seen yet).
+  double closest_if_straight(const NetShot& shot) const {
+    double closest = std::numeric_limits<double>::infinity();
+    if (!previous_) return closest;
+    const auto& [t0, p0] = *previous_;
+    const double t1 = shot.fired_at + cfg_.flight_time_s + cfg_.open_for_s;
+    model_.sweep(shot, shot.fired_at, p0 + (shot.fired_at - t0) * previous_velocity_, t1,
+                 p0 + (t1 - t0) * previous_velocity_, closest);
+    return closest;
+  }
+
+  // Each shot: when, how near the net's centre came to the intruder while open (null: the run
+  // ended or the intruder was caught by an earlier shot before it opened), and how near it would
+  // have come had the intruder flown straight on.
   nlohmann::json shots_json() const {
+    auto finite = [](double d) { return std::isfinite(d) ? nlohmann::json(d) : nlohmann::json(); };
     nlohmann::json shots = nlohmann::json::array();
     for (std::size_t i = 0; i < fire_times_.size(); ++i)
       shots.push_back({{"t_s", fire_times_[i]},
-                       {"closest_m", std::isfinite(closest_[i]) ? nlohmann::json(closest_[i]) : nlohmann::json()}});
+                       {"closest_m", finite(closest_[i])},
+                       {"closest_straight_m", finite(closest_straight_[i])}});
     return shots;
   }
 
@@ -247,9 +266,11 @@ class NetSimNode final : public Node {
 
   NetSimConfig cfg_;
   NetModel model_;
-  std::vector<std::pair<NetShot, std::size_t>> shots_;          ///< in flight, with their index in fire_times_
-  std::vector<double> closest_;                                 ///< per shot: nearest approach while open
-  std::optional<std::pair<double, Eigen::Vector3d>> previous_;  ///< the intruder's last sample
+  std::vector<std::pair<NetShot, std::size_t>> shots_;           ///< in flight, with their index in fire_times_
+  std::vector<double> closest_;                                  ///< per shot: nearest approach while open
+  std::vector<double> closest_straight_;                         ///< per shot: the same, the intruder flying straight
+  Eigen::Vector3d previous_velocity_ = Eigen::Vector3d::Zero();  ///< the intruder's at its last sample
+  std::optional<std::pair<double, Eigen::Vector3d>> previous_;   ///< the intruder's last sample
   std::vector<double> fire_times_;
   std::optional<double> first_fire_, aligned_at_, captured_at_;
   std::optional<std::size_t> captured_by_;  // the shot that caught it

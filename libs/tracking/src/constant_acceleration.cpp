@@ -45,10 +45,11 @@ ConstantAccelerationKalman ConstantAccelerationKalman::start(const Eigen::Vector
   return k;
 }
 
-void ConstantAccelerationKalman::predict(double dt, double q) {
-  const Covariance F = transition(dt);
+void ConstantAccelerationKalman::predict(double dt, double q) { predict(transition(dt), process_noise(dt, q)); }
+
+void ConstantAccelerationKalman::predict(const Covariance& F, const Covariance& Q) {
   x = F * x;
-  P = F * P * F.transpose() + process_noise(dt, q);
+  P = F * P * F.transpose() + Q;
 }
 
 Eigen::Matrix3d ConstantAccelerationKalman::innovation_covariance(double r) const {

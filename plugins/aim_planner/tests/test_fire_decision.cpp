@@ -112,26 +112,32 @@ TEST(HitProbability, IsTheShareOfThePredictedDistributionInsideTheNet) {
   EXPECT_GT(hit_probability({0.5, 0.0, 0.0}, flat, 0.6), 0.99);
 }
 
-// The IMM's prediction grows more uncertain over a net's flight than the steady filter's, and
-// predicting ahead leaves the estimate as it was.
-TEST(TargetEstimate, TheImmsPredictionSpreadsWithItsManoeuvreModel) {
-  TargetFilterConfig ca{TargetFilterConfig::Model::constant_acceleration, 10.0, 1000.0, 0.01, 0.02};
-  TargetFilterConfig imm = ca;
-  imm.model = TargetFilterConfig::Model::imm;
-  TargetEstimate a(Eigen::Vector3d(5, 0, 2), ca), b(Eigen::Vector3d(5, 0, 2), imm);
-  for (int k = 1; k <= 60; ++k) {  // a target flying at 3 m/s, seen at 30 Hz
-    const Eigen::Vector3d z(5.0, 3.0 * k / 30.0, 2.0);
-    a.predict(1.0 / 30.0);
-    b.predict(1.0 / 30.0);
-    a.update(z);
-    b.update(z);
+// Each estimate follows a target flying straight at 3 m/s and predicts it half a second ahead; the
+// IMM knows it flies at constant velocity; predicting ahead grows the uncertainty and leaves the
+// estimate as it was.
+TEST(TargetEstimate, EveryModelPredictsAStraightFlightAndTheImmKnowsItIsOne) {
+  using M = TargetFilterConfig::Model;
+  for (const M model : {M::constant_velocity, M::constant_acceleration, M::imm}) {
+    SCOPED_TRACE(static_cast<int>(model));
+    TargetEstimate e(Eigen::Vector3d(5, 0, 2), TargetFilterConfig{model, 10.0, 1.0, 10.0, 0.01, 0.02});
+    for (int k = 1; k <= 60; ++k) {  // seen at 30 Hz
+      e.predict(1.0 / 30.0);
+      e.update(Eigen::Vector3d(5.0, 3.0 * k / 30.0, 2.0));
+    }
+    EXPECT_NEAR(e.state()(4), 3.0, 0.1);
+    EXPECT_LT((e.position_after(0.5) - Eigen::Vector3d(5.0, 7.5, 2.0)).norm(), 0.05);
+    const Eigen::VectorXd before = e.state();
+    const Eigen::Matrix3d ahead = e.position_covariance_after(0.5);
+    const Eigen::Matrix3d now = e.covariance().topLeftCorner(3, 3);
+    EXPECT_GT(ahead.trace(), now.trace());
+    EXPECT_EQ(e.state(), before);
+    const auto mu = e.model_probabilities();
+    if (model != M::imm) {
+      EXPECT_TRUE(mu.empty());
+      continue;
+    }
+    ASSERT_EQ(mu.size(), 3u);  // cv, ca, ct
+    EXPECT_GT(mu[0], mu[1]);
+    EXPECT_GT(mu[0], mu[2]);
   }
-  EXPECT_NEAR(a.state()(4), 3.0, 0.1);
-  EXPECT_NEAR(b.state()(4), 3.0, 0.1);
-  const Eigen::VectorXd before = b.state();
-  const Eigen::Matrix3d now = b.covariance().topLeftCorner<3, 3>();
-  const Eigen::Matrix3d ahead = b.position_covariance_after(0.5);
-  EXPECT_GT(ahead.trace(), now.trace());
-  EXPECT_EQ(b.state(), before);
-  EXPECT_GT(ahead.trace(), a.position_covariance_after(0.5).trace());
 }

@@ -3,8 +3,10 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
+#include "evader.hpp"
 #include "kestrel/runtime/graph.hpp"
 #include "kestrel/runtime/plugin_host.hpp"
 #include "kestrel/runtime/run.hpp"
@@ -172,6 +174,72 @@ TEST(RecordedFlight, InterpolatesHoldsAndLoops) {
   expect_near(hold.at(10.0).position, {2, 4, 0});
   const RecordedFlight loop(file, true);
   expect_near(loop.at(5.0).position, {1, 0, 0});  // 5 s = one 4 s loop + 1 s
+}
+
+TEST(Placed, TurnsMovesAndSpeedsUpARecordedFlight) {
+  const auto file = write_csv("kestrel-placed.csv", "t,x,y,z\n0,1,0,2\n2,3,0,2\n");
+  // A quarter turn left, then 10 m ahead: (1, 0) becomes (0, 1), plus the offset; twice as fast.
+  const Placed placed(std::make_unique<RecordedFlight>(file, false), {10, 0, 1}, M_PI / 2.0, 2.0);
+  expect_near(placed.at(0.0).position, {10, 1, 3});
+  expect_near(placed.at(0.5).position, {10, 2, 3});  // 0.5 s here is 1 s of the recording
+  expect_near(placed.at(0.5).velocity, {0, 2, 0});   // 1 m/s recorded, turned, twice as fast
+  expect_near(placed.at(5.0).position, {10, 3, 3});  // held at the end
+  expect_consistent_velocity(placed, 0.3);
+}
+
+// A hunter far away, then 5 m away, then 1.5 m behind it wherever it goes: the evader cruises,
+// then flees at its top speed, then breaks; within its limits throughout, and the same every time
+// for a seed.
+TEST(Evader, CruisesFleesAndBreaksWithinItsLimits) {
+  EvaderParams p;
+  p.centre = {10, 0, 3}, p.half_extent = {8, 8, 1};
+  Evader evader(p.centre, p, 3), same(p.centre, p, 3);
+  std::set<Evader::Mode> seen;
+  double top = 0.0;
+  State previous{p.centre, Eigen::Vector3d::Zero()};
+  for (int k = 1; k <= 360; ++k) {  // 12 s at 30 Hz
+    const double t = k / 30.0;
+    const Eigen::Vector3d hunter = t < 3.0   ? Eigen::Vector3d(-30, 0, 3)
+                                   : t < 8.0 ? Eigen::Vector3d(5, 0, 3)
+                                             : Eigen::Vector3d(previous.position - Eigen::Vector3d(1.5, 0, 0));
+    const State s = evader.step(t, hunter);
+    expect_near(s.position, same.step(t, hunter).position, 0.0);
+    seen.insert(evader.mode());
+    if (t < 3.0 || t > 8.1) {
+      EXPECT_EQ(evader.mode(), t < 3.0 ? Evader::Mode::cruise : Evader::Mode::break_away) << t;
+    }
+    top = std::max(top, s.velocity.norm());
+    EXPECT_LE(s.velocity.norm(), p.top_speed + 1e-9);
+    // 1/30 s apart (at most four of its 10 ms steps), the velocity changes at most by the
+    // acceleration limit's worth.
+    EXPECT_LE((s.velocity - previous.velocity).norm(), p.max_acceleration * 0.04 + 1e-9) << t;
+    EXPECT_GE(s.position.z(), p.min_height - 0.1);
+    previous = s;
+  }
+  EXPECT_EQ(seen.size(), 3u);  // cruise, flee, break
+  EXPECT_GT(top, 0.9 * p.top_speed);
+  // Without a hunter it only cruises, and stays near its box.
+  Evader alone(p.centre, p, 4);
+  for (int k = 1; k <= 900; ++k) {
+    const State s = alone.step(k / 30.0, std::nullopt);
+    EXPECT_EQ(alone.mode(), Evader::Mode::cruise);
+    EXPECT_LE(s.velocity.norm(), p.cruise_speed + 1e-9);
+    for (int i = 0; i < 3; ++i) EXPECT_LE(std::abs(s.position[i] - p.centre[i]), p.half_extent[i] + 0.5);
+  }
+}
+
+// Fleeing, it opens the range: a hunter that stops 5 m away is left behind, and the evader, once
+// out of the flee radius, cruises again.
+TEST(Evader, FleesOutOfTheFleeRadius) {
+  EvaderParams p;
+  p.centre = {10, 0, 3}, p.half_extent = {8, 8, 1};
+  Evader evader(p.centre, p, 5);
+  const Eigen::Vector3d hunter(5, 0, 3);  // 5 m: within the 6 m flee radius
+  evader.step(0.1, hunter);
+  EXPECT_EQ(evader.mode(), Evader::Mode::flee);
+  State s;
+  for (int k = 1; k <= 90; ++k) s = evader.step(0.1 + k / 30.0, hunter);
+  EXPECT_GT((s.position - hunter).norm(), p.flee_radius - 0.5);
 }
 
 TEST(RecordedFlight, BadFilesNameTheFileAndLine) {

@@ -30,6 +30,8 @@ struct ConstantAccelerationKalman {
   static ConstantAccelerationKalman start(const Eigen::Vector3d& z, double p);
 
   void predict(double dt, double q);
+  /// The same for any linear model: x = F x, P = F P F^T + Q (kestrel/tracking/motion_models.hpp).
+  void predict(const Covariance& F, const Covariance& Q);
   /// Innovation covariance S = H P H^T + r I for the current P.
   Eigen::Matrix3d innovation_covariance(double r) const;
   void update(const Eigen::Vector3d& z, double r);
