@@ -202,12 +202,12 @@ def group_figures(runs):
 
 def paired_shots(launched, ordered):
     """Each launched shot (the net's log) with the aim's prediction for it (its order's log), paired
-    by time: the predicted miss and the probability beside the closest approach."""
+    by time: the predicted miss, its spread and probability beside the closest approach."""
     shots = []
     for shot in launched:
         order = min(ordered, key=lambda o: abs(o["t_s"] - shot["t_s"]), default=None)
         if order is not None and abs(order["t_s"] - shot["t_s"]) < 0.1:
-            shot = {**shot, "predicted_miss_m": order.get("predicted_miss_m"), "probability": order.get("probability")}
+            shot = {**{k: v for k, v in order.items() if k != "t_s"}, **shot}
         shots.append(shot)
     return shots
 

@@ -63,7 +63,36 @@ for law, summary in doc["by_guidance"].items():
         assert 0.0 <= b["wilson_low"] and b["wilson_high"] <= 1.0
     # Each law flew the same engagements: the same seeds with the same intruder.
     assert [r["seed"] for r in summary["per_run"]] == [1, 2, 100001, 100002]
+    # The missed shots are sorted by cause and recounted from the shots: a miss is a shot whose
+    # net came no nearer than its radius; by the manoeuvre when flying straight it was caught.
+    shots = [(s, r["net_radius_m"]) for r in summary["per_run"] for s in r["shots"]]
+    missed = [(s, radius) for s, radius in shots if s["closest_m"] is not None and s["closest_m"] > radius]
+    assert summary["shots"] == len(shots) and summary["missed_shots"] == len(missed), summary
+    assert summary["missed_by_manoeuvre"] + summary["missed_by_aim"] == len(missed)
+    assert summary["missed_by_manoeuvre"] == sum(s["closest_straight_m"] <= radius for s, radius in missed)
+    # The aim's prediction is paired with each launched shot; the launcher carried 2 nets.
+    for s, _ in shots:
+        assert "predicted_miss_m" in s and "spread_m" in s and "closest_straight_m" in s, s
+    assert all(r["fire_count"] is None or len(r["shots"]) <= 2 for r in summary["per_run"])
 assert os.path.getsize(os.path.join(out, "capture_curve.png")) > 1000
 rows = list(csv.DictReader(open(os.path.join(out, "capture_curve.csv"))))
 assert [r["band"] for r in rows] == ["0:3", "6:10"] and "pn_low" in rows[0], rows
 PY
+
+# Evading intruders and the net budget: --shapes evade draws them, --nets 1 gives one net a run.
+evade=$out/evade
+scripts/capture-benchmark "$evade" --seeds 2 --rendered 0 --duration 8 --shapes evade --nets 1 > /dev/null
+python3 - "$evade" <<'PY'
+import csv, json, os, sys
+out = sys.argv[1]
+cases = list(csv.DictReader(open(os.path.join(out, "cases.csv"))))
+assert {c["intruder.shape"] for c in cases} == {"evade"} and all(c["intruder.evade_speed_m_s"] for c in cases), cases
+doc = json.load(open(os.path.join(out, "capture.json")))
+assert doc["by_shape"] == {"evade": {"runs": 2, "captured": doc["runs"] - len(doc["failures"])}}, doc["by_shape"]
+for r in doc["per_run"]:
+    assert len(r["shots"]) <= 1, r
+PY
+if scripts/capture-benchmark "$out/bad" --seeds 1 --rendered 0 --shapes evade,loop > /dev/null 2>&1; then
+  echo "an unknown shape was accepted" >&2
+  exit 1
+fi
