@@ -59,6 +59,7 @@ struct AimPlannerConfig {
   double last_net_radius_m = 0.3;
   double fire_probability = 0.0;
   double max_shot_spread_m = 0.7;
+  double fire_latency_s = 0.0;
   double last_net_probability = 0.9;
   double net_radius_m = 0.6;
   ShotPrediction shot_prediction = ShotPrediction::constant_velocity;
@@ -199,6 +200,12 @@ class AimPlannerNode final : public Node {
             "no shot while the estimate's prediction at the closest approach is more uncertain than this (the standard "
             "deviation along its most uncertain direction): a fresh estimate knows where the target is but not yet "
             "where it goes (0.7 m: shots within it caught 84 % of the time, those beyond it 45 %); 0: no such test");
+    c.param("fire_latency_s", &C::fire_latency_s)
+        .with_unit("s")
+        .range(0.0, 10.0)
+        .describe(
+            "from the order to the launch, beyond the perception chain's latency (which the aim measures): the "
+            "link to a launcher behind an autopilot; the shot is predicted from that much later");
     c.param("last_net_probability", &C::last_net_probability)
         .range(0.0, 1.0)
         .describe("with fire_probability: the probability the last net waits for");
@@ -316,7 +323,13 @@ class AimPlannerNode final : public Node {
       error = cfg_.aim_point_m - in_camera;
       ++target_frames_;
       squared_error_ += error->squaredNorm();
-      shot = predict_target_shot(camera, hunter->velocity, x);
+      // The net leaves when the order reaches the launcher, not at the capture the tracks come
+      // from: in realtime the perception chain's latency (now - capture) and the link's
+      // (fire_latency_s) pass first, the hunter and the target moving on meanwhile.
+      const double lead = std::max(0.0, to_seconds(ctx.now()) - t) + cfg_.fire_latency_s;
+      geometry::CameraPose launch = camera;
+      launch.position_world += hunter->velocity * lead;
+      shot = predict_target_shot(launch, hunter->velocity, x, lead);
       miss = shot->miss.norm();
       // The estimate's position uncertainty, grown over the time the net takes to its closest
       // approach: how far it can be trusted, and the chance the net holds the target.
@@ -385,15 +398,17 @@ class AimPlannerNode final : public Node {
   // The miss if the net were fired now, on the launcher's ballistics, against the target predicted
   // over the time the net is open (shot_prediction: at constant velocity by default; the
   // estimate's acceleration, extrapolated that far, is noisier at low speeds).
+  // `lead`: seconds from the estimate's time to the launch.
   PredictedShot predict_target_shot(const geometry::CameraPose& camera, const Eigen::Vector3d& hunter_velocity,
-                                    const Eigen::VectorXd& x) const {
+                                    const Eigen::VectorXd& x, double lead) const {
     using P = AimPlannerConfig::ShotPrediction;
     if (cfg_.shot_prediction == P::model)
-      return predict_shot(net_, camera, hunter_velocity, [&](double tau) { return estimate_->position_after(tau); });
+      return predict_shot(net_, camera, hunter_velocity,
+                          [&](double tau) { return estimate_->position_after(lead + tau); });
     const bool with_acceleration = cfg_.shot_prediction == P::constant_acceleration;
-    return predict_shot(net_, camera, hunter_velocity,
-                        TargetMotion{x.head<3>(), x.segment<3>(3),
-                                     with_acceleration ? Eigen::Vector3d(x.segment<3>(6)) : Eigen::Vector3d::Zero()});
+    const TargetMotion motion{x.head<3>(), x.segment<3>(3),
+                              with_acceleration ? Eigen::Vector3d(x.segment<3>(6)) : Eigen::Vector3d::Zero()};
+    return predict_shot(net_, camera, hunter_velocity, [&](double tau) { return motion.at(lead + tau); });
   }
 
   // The launcher (when connected) fires only when loaded and not reloading.
