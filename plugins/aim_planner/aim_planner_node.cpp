@@ -19,6 +19,7 @@
 #include <kestrel/messages/vehicle_state.hpp>
 #include <kestrel/plugin.hpp>
 #include <kestrel/tracking/kalman_filter.hpp>
+#include <kestrel/vehicle/airframe.hpp>
 #include <optional>
 
 #include "fire_decision.hpp"
@@ -35,6 +36,7 @@ struct AimPlannerConfig {
   enum class ShotPrediction { constant_velocity, constant_acceleration, model };
   Eigen::Vector3d aim_point_m{0.0, 1.0, 2.0};
   Eigen::Vector3d camera_offset_m{0.1, 0.0, 0.0};
+  std::string airframe = "firefly";
   double gain_1_s = 1.0;
   double max_speed_m_s = 5.0;
   double max_acceleration_m_s2 = 4.0;
@@ -90,6 +92,11 @@ class AimPlannerNode final : public Node {
         .with_unit("m")
         .range(-10.0, 10.0)
         .describe("the camera's position in the body frame (as the camera node has it)");
+    c.param("airframe", &C::airframe)
+        .describe(
+            "the hunter's airframe (kestrel/vehicle/airframe.hpp): the speed and acceleration limits may not exceed "
+            "its envelope (firefly 12 m/s, 8 m/s^2; interceptor 20 m/s, 12 m/s^2)")
+        .allowed = vehicle::airframe_names();
     c.param("gain_1_s", &C::gain_1_s)
         .with_unit("1/s")
         .range(0.01, 100.0)
@@ -236,6 +243,13 @@ class AimPlannerNode final : public Node {
             "terminal from the start), pursuit, pn, frpn, predictive");
     c.rule("last_net_radius_m <= capture_radius_m", {"last_net_radius_m", "capture_radius_m"},
            [](const C& k) { return k.last_net_radius_m <= k.capture_radius_m; });
+    // The aim plans only what the airframe flies.
+    c.rule("max_speed_m_s <= the airframe's top speed (firefly 12, interceptor 20 m/s)", {"max_speed_m_s", "airframe"},
+           [](const C& k) { return k.max_speed_m_s <= vehicle::airframe(k.airframe).envelope.max_speed_m_s; });
+    c.rule("max_acceleration_m_s2 <= the airframe's (firefly 8, interceptor 12 m/s^2)",
+           {"max_acceleration_m_s2", "airframe"}, [](const C& k) {
+             return k.max_acceleration_m_s2 <= vehicle::airframe(k.airframe).envelope.max_acceleration_m_s2;
+           });
     c.rule("min_altitude_m <= takeoff_altitude_m", {"min_altitude_m", "takeoff_altitude_m"},
            [](const C& k) { return k.min_altitude_m <= k.takeoff_altitude_m; });
     return NodeSpec("aim_planner", "Aims the hunter so the target sits where the net opens, and fires")

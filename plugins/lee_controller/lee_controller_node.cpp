@@ -54,17 +54,26 @@ class LeeControllerNode final : public Node {
   static NodeSpec spec() {
     using C = LeeControllerConfig;
     ConfigSpec<C> c;
-    c.param("position_gain", &C::position_gain).with_unit("N/m").range(0.0, 1000.0).describe("k_x, per world axis");
-    c.param("velocity_gain", &C::velocity_gain).with_unit("N s/m").range(0.0, 1000.0).describe("k_v, per world axis");
-    c.param("attitude_gain", &C::attitude_gain).with_unit("N m/rad").range(0.0, 1000.0).describe("k_R, per body axis");
+    c.param("position_gain", &C::position_gain)
+        .with_unit("N/m")
+        .range(0.0, 1000.0)
+        .describe("k_x, per world axis (the default: the airframe's)");
+    c.param("velocity_gain", &C::velocity_gain)
+        .with_unit("N s/m")
+        .range(0.0, 1000.0)
+        .describe("k_v, per world axis (the default: the airframe's)");
+    c.param("attitude_gain", &C::attitude_gain)
+        .with_unit("N m/rad")
+        .range(0.0, 1000.0)
+        .describe("k_R, per body axis (the default: the airframe's)");
     c.param("angular_rate_gain", &C::angular_rate_gain)
         .with_unit("N m s/rad")
         .range(0.0, 1000.0)
-        .describe("k_Omega, per body axis");
+        .describe("k_Omega, per body axis (the default: the airframe's)");
     c.param("max_tilt_deg", &C::max_tilt_deg)
         .with_unit("deg")
         .range(1.0, 89.0)
-        .describe("the desired thrust direction stays within this angle of vertical");
+        .describe("the desired thrust direction stays within this angle of vertical (60: the airframe's)");
     c.param("gravity_m_s2", &C::gravity_m_s2).with_unit("m/s^2").range(0.0, 100.0).describe("gravity, along -z");
     vehicle::declare_multirotor(c, &C::vehicle);
     c.choice("on_fault", &C::on_fault, {{"hover", C::OnFault::hover}, {"cut", C::OnFault::cut}})
@@ -75,7 +84,8 @@ class LeeControllerNode final : public Node {
         .details(
             "Lee, Leok & McClamroch (2010) as RotorS implements it, with Firefly gains. Runs once per odometry "
             "message against the latest setpoint; until the first setpoint the motors stay still. World frame z up, "
-            "body FLU. The vehicle parameters must describe the vehicle flown (they default to the simulator's).")
+            "body FLU. The vehicle parameters must describe the vehicle flown (they default to the simulator's). "
+            "The gains and the tilt limit left at their defaults (the Firefly's) are the airframe's, tuned for it.")
         .input(kOdometry, "the vehicle's state")
         .input(kSetpoint, "where the vehicle should be", {.trigger = Trigger::latest, .optional = true})
         .output(kCommand, "rotor speeds, with the thrust and torques they make")
@@ -156,10 +166,25 @@ class LeeControllerNode final : public Node {
 
  private:
   explicit LeeControllerNode(const LeeControllerConfig& cfg)
-      : cfg_(cfg),
-        control_(cfg.vehicle.multirotor(),
-                 LeeGains{cfg.position_gain, cfg.velocity_gain, cfg.attitude_gain, cfg.angular_rate_gain},
-                 cfg.gravity_m_s2, cfg.max_tilt_deg * M_PI / 180.0) {}
+      : cfg_(cfg), control_(cfg.vehicle.multirotor(), gains_for(cfg), cfg.gravity_m_s2, tilt_for(cfg) * M_PI / 180.0) {}
+
+  // A gain left at its default is the airframe's own; one set to anything else is the user's.
+  static LeeGains gains_for(const LeeControllerConfig& cfg) {
+    const LeeControllerConfig defaults{};
+    const vehicle::LeeGainSet& tuned = vehicle::airframe(cfg.vehicle.airframe).gains;
+    const auto pick = [](const Eigen::Vector3d& given, const Eigen::Vector3d& fallback, const Eigen::Vector3d& own) {
+      return given != fallback ? given : own;
+    };
+    return LeeGains{pick(cfg.position_gain, defaults.position_gain, tuned.position),
+                    pick(cfg.velocity_gain, defaults.velocity_gain, tuned.velocity),
+                    pick(cfg.attitude_gain, defaults.attitude_gain, tuned.attitude),
+                    pick(cfg.angular_rate_gain, defaults.angular_rate_gain, tuned.angular_rate)};
+  }
+  static double tilt_for(const LeeControllerConfig& cfg) {
+    return cfg.max_tilt_deg != LeeControllerConfig{}.max_tilt_deg
+               ? cfg.max_tilt_deg
+               : vehicle::airframe(cfg.vehicle.airframe).envelope.max_tilt_deg;
+  }
 
   void fault(Context& ctx, std::uint64_t& counter, const char* what) {
     if (counter++ == 0)

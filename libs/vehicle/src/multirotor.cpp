@@ -43,16 +43,30 @@ double Multirotor::hover_rotor_speed_rad_s(double gravity) const {
 }
 
 Multirotor MultirotorConfig::multirotor() const {
-  Multirotor m;
-  m.mass_kg = mass_kg;
-  m.inertia_kg_m2 = inertia_kg_m2;
-  m.rotors = Multirotor::ring(rotor_count, first_rotor_angle_deg * M_PI / 180.0, arm_length_m);
-  m.thrust_constant = thrust_constant;
-  m.moment_constant = moment_constant;
-  m.motor_time_constant_up_s = motor_time_constant_up_s;
-  m.motor_time_constant_down_s = motor_time_constant_down_s;
-  m.max_rotor_speed_rad_s = max_rotor_speed_rad_s;
-  m.rotor_drag_coefficient = rotor_drag_coefficient;
+  const MultirotorConfig defaults{};
+  Multirotor m = vehicle::airframe(airframe).body;
+  // A field left at its default is the airframe's; one set to anything else replaces it.
+  const auto take = [](auto& into, const auto& given, const auto& fallback) {
+    if (given != fallback) into = given;
+  };
+  take(m.mass_kg, mass_kg, defaults.mass_kg);
+  take(m.inertia_kg_m2, inertia_kg_m2, defaults.inertia_kg_m2);
+  take(m.thrust_constant, thrust_constant, defaults.thrust_constant);
+  take(m.moment_constant, moment_constant, defaults.moment_constant);
+  take(m.motor_time_constant_up_s, motor_time_constant_up_s, defaults.motor_time_constant_up_s);
+  take(m.motor_time_constant_down_s, motor_time_constant_down_s, defaults.motor_time_constant_down_s);
+  take(m.max_rotor_speed_rad_s, max_rotor_speed_rad_s, defaults.max_rotor_speed_rad_s);
+  take(m.rotor_drag_coefficient, rotor_drag_coefficient, defaults.rotor_drag_coefficient);
+  if (rotor_count != defaults.rotor_count || first_rotor_angle_deg != defaults.first_rotor_angle_deg ||
+      arm_length_m != defaults.arm_length_m) {
+    // The ring is rebuilt from the airframe's own ring with the fields given.
+    const Rotor& first = m.rotors.front();
+    const int count = rotor_count != defaults.rotor_count ? rotor_count : static_cast<int>(m.rotors.size());
+    const double angle = first_rotor_angle_deg != defaults.first_rotor_angle_deg ? first_rotor_angle_deg * M_PI / 180.0
+                                                                                 : first.angle_rad;
+    const double arm = arm_length_m != defaults.arm_length_m ? arm_length_m : first.arm_length_m;
+    m.rotors = Multirotor::ring(count, angle, arm);
+  }
   return m;
 }
 

@@ -1,10 +1,11 @@
-// The Lee controller against hand-computed cases, and flying the simulated Firefly: hover, a
-// position step, a yaw turn.
+// The Lee controller against hand-computed cases, and flying the simulated airframes: hover, a
+// position step, a yaw turn, and the envelope each airframe claims.
 #include <gmock/gmock.h>
 
 #include <cmath>
 #include <functional>
 #include <kestrel/geometry/frames.hpp>
+#include <kestrel/vehicle/airframe.hpp>
 #include <kestrel/vehicle/multirotor_dynamics.hpp>
 #include <kestrel/vehicle/so3.hpp>
 
@@ -33,16 +34,22 @@ msg::TrajectorySetpoint setpoint_at(const Eigen::Vector3d& p, double yaw = 0.0) 
 
 // Controller and simulator in one loop: the controller at 100 Hz on the true state, the
 // simulator at 1 kHz in between, as the quadrotor_sim / lee_controller graph runs them.
+LeeGains gains_of(const vehicle::Airframe& a) {
+  return {a.gains.position, a.gains.velocity, a.gains.attitude, a.gains.angular_rate};
+}
+
 struct Flight {
-  LeePositionControl control{kFirefly, LeeGains{}};
-  vehicle::MultirotorDynamics dynamics{kFirefly};
+  LeePositionControl control;
+  vehicle::MultirotorDynamics dynamics;
   vehicle::RigidBodyState state;
   vehicle::Environment env;
 
-  explicit Flight(const Eigen::Vector3d& start) {
+  explicit Flight(const Eigen::Vector3d& start, const vehicle::Airframe& frame = vehicle::airframe("firefly"))
+      : control(frame.body, gains_of(frame), 9.81, frame.envelope.max_tilt_deg * M_PI / 180.0), dynamics(frame.body) {
     env.ground_z = -std::numeric_limits<double>::infinity();
     state.position = start;
-    state.rotor_speeds = Eigen::VectorXd::Constant(6, kFirefly.hover_rotor_speed_rad_s());
+    state.rotor_speeds = Eigen::VectorXd::Constant(static_cast<Eigen::Index>(frame.body.rotors.size()),
+                                                   frame.body.hover_rotor_speed_rad_s());
   }
   msg::VehicleState observed() const {
     msg::VehicleState s;
@@ -53,8 +60,13 @@ struct Flight {
     return s;
   }
   void fly(const msg::TrajectorySetpoint& sp, double seconds, const std::function<void(double)>& each = {}) {
+    fly([&](double) { return sp; }, seconds, each);
+  }
+  // Against a setpoint that moves: `at(t)` is the setpoint at time t.
+  void fly(const std::function<msg::TrajectorySetpoint(double)>& at, double seconds,
+           const std::function<void(double)>& each = {}) {
     for (int k = 0; k < static_cast<int>(std::lround(seconds * 100)); ++k) {
-      const Eigen::VectorXd speeds = control.compute(sp, observed()).rotor_speeds;
+      const Eigen::VectorXd speeds = control.compute(at(k / 100.0), observed()).rotor_speeds;
       for (int i = 0; i < 10; ++i) dynamics.step(state, speeds, env, 0.001);
       if (each) each((k + 1) / 100.0);
     }
@@ -160,3 +172,50 @@ TEST(LeeController, TracksAYawTurn) {
   EXPECT_NEAR(geometry::yaw_of(flight.state.orientation), M_PI / 2, 0.1 * M_PI / 180.0);
   EXPECT_LT(drift, 0.02);  // turning in place moves the vehicle by a centimetre at most
 }
+
+TEST(LeeController, InterceptorPositionStepIsFasterThanTheFireflysWithLittleOvershoot) {
+  Flight flight({0, 0, 2}, vehicle::airframe("interceptor"));
+  double peak = 0.0, settled_after = 0.0, rise = -1.0, sag = 0.0;
+  flight.fly(setpoint_at({1, 0, 2}), 6.0, [&](double t) {
+    const double x = flight.state.position.x();
+    peak = std::max(peak, x);
+    if (rise < 0 && x >= 0.9) rise = t;
+    if (std::abs(x - 1.0) > 0.02) settled_after = t;
+    sag = std::max(sag, std::abs(flight.state.position.z() - 2.0));
+  });
+  // Gains 9 and 4.8 on 1 kg: w_n = 3 rad/s, damping 0.8 (the Firefly's: 1.96 rad/s, rise 0.5-1.6 s).
+  EXPECT_LT(peak, 1.05);
+  EXPECT_LT(rise, 1.0);
+  EXPECT_LT(settled_after, 2.0);
+  EXPECT_LT(sag, 0.03);
+  EXPECT_NEAR(flight.state.position.x(), 1.0, 1e-3);
+}
+
+// Each airframe flies the envelope it declares (and the aim plans within): a setpoint that
+// accelerates at max_acceleration to max_speed along x at a fixed height, then cruises.
+class AirframeEnvelope : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(AirframeEnvelope, IsFlown) {
+  const vehicle::Airframe& frame = vehicle::airframe(GetParam());
+  const double a = frame.envelope.max_acceleration_m_s2, v = frame.envelope.max_speed_m_s, ramp = v / a;
+  Flight flight({0, 0, 5}, frame);
+  double lag = 0.0, sag = 0.0, speed = 0.0;
+  const auto at = [&](double t) {
+    msg::TrajectorySetpoint s;
+    const double ta = std::min(t, ramp);
+    s.position = {0.5 * a * ta * ta + v * std::max(0.0, t - ramp), 0.0, 5.0};
+    s.velocity = {t < ramp ? a * t : v, 0.0, 0.0};
+    s.acceleration = {t < ramp ? a : 0.0, 0.0, 0.0};
+    return s;
+  };
+  flight.fly(at, ramp + 3.0, [&](double t) {
+    lag = std::max(lag, (at(t).position - flight.state.position).norm());
+    sag = std::max(sag, std::abs(flight.state.position.z() - 5.0));
+    speed = flight.state.velocity.x();
+  });
+  EXPECT_LT(lag, 1.0) << frame.name;
+  EXPECT_LT(sag, 0.5) << frame.name;
+  EXPECT_NEAR(speed, v, 0.05 * v) << frame.name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Airframes, AirframeEnvelope, ::testing::Values("firefly", "interceptor"));

@@ -1,15 +1,19 @@
 #pragma once
 // The multirotor's parameters as a node declares them: the simulator and the controllers each
 // bind this group into their config struct with one call, so the names, units, ranges and the
-// Firefly defaults are written once.
+// Firefly defaults are written once. `airframe` names the vehicle (kestrel/vehicle/airframe.hpp);
+// a field set to other than its (Firefly) default changes that airframe.
 #include <Eigen/Core>
 #include <kestrel/config_spec.hpp>
+#include <string>
 
+#include "kestrel/vehicle/airframe.hpp"
 #include "kestrel/vehicle/multirotor.hpp"
 
 namespace kestrel::vehicle {
 
 struct MultirotorConfig {
+  std::string airframe = "firefly";
   double mass_kg = 1.56779;
   Eigen::Vector3d inertia_kg_m2{0.0347563, 0.0458929, 0.0977};
   int rotor_count = 6;
@@ -22,6 +26,7 @@ struct MultirotorConfig {
   double max_rotor_speed_rad_s = 838.0;
   double rotor_drag_coefficient = 8.06428e-5;
 
+  /// The airframe's body, with each field set to other than its default in its place.
   Multirotor multirotor() const;
 };
 
@@ -29,6 +34,11 @@ struct MultirotorConfig {
 template <class Config>
 void declare_multirotor(ConfigSpec<Config>& c, MultirotorConfig Config::*group) {
   using M = MultirotorConfig;
+  c.param("airframe", group, &M::airframe)
+      .describe(
+          "the vehicle: firefly (the paper's hexacopter) or interceptor (a 1 kg quadrotor, thrust-to-weight 4.5); "
+          "each parameter below set to other than its default (the Firefly's) changes it")
+      .allowed = airframe_names();
   c.param("mass_kg", group, &M::mass_kg).with_unit("kg").range(0.01, 1000.0).describe("vehicle mass");
   c.param("inertia_kg_m2", group, &M::inertia_kg_m2)
       .with_unit("kg m^2")
