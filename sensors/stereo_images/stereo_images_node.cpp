@@ -10,6 +10,7 @@
 
 #include "kestrel/camera_rig/camera_rig.hpp"
 #include "kestrel/stereo_calibration/camera_info.hpp"
+#include "kestrel/stereo_calibration/middlebury_calibration.hpp"
 #include "kestrel/stereo_calibration/stereo_rectifier.hpp"
 #include "kestrel/stereo_images/pair_source.hpp"
 
@@ -23,6 +24,7 @@ struct StereoImagesConfig {
   std::string left_info;
   std::string right_info;
   std::string opencv_calibration;
+  std::string middlebury_calibration;
   enum class Images { raw, rectified };
   Images images = Images::raw;
   double fps = 30.0;
@@ -35,13 +37,25 @@ struct StereoImagesConfig {
 namespace {
 
 std::pair<calibration::CameraInfo, calibration::CameraInfo> calibration_of(const StereoImagesConfig& c) {
+  const int given = !c.opencv_calibration.empty() + !c.middlebury_calibration.empty() +
+                    (!c.left_info.empty() || !c.right_info.empty());
+  if (given > 1)
+    throw Error("give one calibration: left_info and right_info, opencv_calibration or middlebury_calibration");
+  if (!c.middlebury_calibration.empty()) {
+    if (c.images != StereoImagesConfig::Images::raw)
+      throw Error(
+          "middlebury_calibration moves the right image by doffs (so that disparity gives depth): leave images: raw");
+    return calibration::load_middlebury_calibration(c.middlebury_calibration).camera_infos();
+  }
   if (!c.opencv_calibration.empty()) {
     if (!c.left_info.empty() || !c.right_info.empty())
       throw Error("give either left_info and right_info or opencv_calibration, not both");
     return calibration::camera_infos(calibration::load_opencv_stereo(c.opencv_calibration));
   }
   if (c.left_info.empty() || c.right_info.empty())
-    throw Error("no calibration: give left_info and right_info (ROS camera_info files) or opencv_calibration");
+    throw Error(
+        "no calibration: give left_info and right_info (ROS camera_info files), opencv_calibration or "
+        "middlebury_calibration");
   return {calibration::load_camera_info(c.left_info), calibration::load_camera_info(c.right_info)};
 }
 
@@ -84,6 +98,10 @@ class StereoImagesNode final : public Node {
     c.param("right_info", &C::right_info).describe("ROS camera_info YAML of the right camera");
     c.param("opencv_calibration", &C::opencv_calibration)
         .describe("or an OpenCV stereo calibration (K1, D1, K2, D2, R, T, image_width, image_height), rectified here");
+    c.param("middlebury_calibration", &C::middlebury_calibration)
+        .describe(
+            "or a Middlebury calib.txt (cam0, cam1, doffs, baseline in mm): the right image is moved by doffs onto "
+            "the left camera's principal point, so that disparity gives depth");
     c.choice("images", &C::images, {{"raw", C::Images::raw}, {"rectified", C::Images::rectified}})
         .describe("raw: rectified here with the calibration; rectified: already, only P's camera is used");
     c.param("fps", &C::fps).with_unit("Hz").range(0.1, 1000.0).describe("frames a second: the pairs' times");
