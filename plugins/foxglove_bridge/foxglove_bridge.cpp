@@ -16,9 +16,16 @@
 
 namespace kestrel::foxglove {
 
+namespace {
+// This machine only: 127.0.0.0/8, ::1, localhost.
+bool loopback(const std::string& address) {
+  return address.rfind("127.", 0) == 0 || address == "::1" || address == "localhost";
+}
+}  // namespace
+
 struct BridgeConfig {
   std::int64_t port = 8765;
-  std::string address = "0.0.0.0";
+  std::string address = "127.0.0.1";
   std::string topics;
   std::int64_t client_queue_kib = 16384;
 };
@@ -32,7 +39,9 @@ class FoxgloveBridgeNode final : public Node {
     ConfigSpec<C> c;
     c.param("port", &C::port).range(0, 65535).describe("TCP port of the WebSocket server (0: any free port, logged)");
     c.param("address", &C::address)
-        .describe("address it listens on: 0.0.0.0 for every interface, 127.0.0.1 for this machine");
+        .describe(
+            "address it listens on: 127.0.0.1 for this machine only (reach it from elsewhere through an SSH "
+            "tunnel), 0.0.0.0 for every interface (anyone on the network can watch: a warning says so)");
     c.param("topics", &C::topics)
         .describe(
             "what is served: topic patterns /NODE/PORT separated by commas or spaces, '!PATTERN' to leave some out; "
@@ -57,6 +66,11 @@ class FoxgloveBridgeNode final : public Node {
                                   std::string("kestrel ") + KESTREL_VERSION_STRING}) {
     // Scripts and tests wait for this line; with port 0 it is the only way to learn the port.
     init.log().info("live view: foxglove.websocket.v1 on ws://{}:{}", cfg_.address, server_.port());
+    if (!loopback(cfg_.address))
+      init.log().warn(
+          "the live view listens on {}, open to the network without authentication: anyone who reaches port {} "
+          "watches the camera and the tracks (listen on 127.0.0.1 and use an SSH tunnel, docs/recording.md)",
+          cfg_.address, server_.port());
   }
 
   void process(Context& ctx) override {

@@ -13,7 +13,7 @@
 namespace kestrel::foxglove {
 
 struct LiveServerOptions {
-  std::string address = "0.0.0.0";
+  std::string address = "127.0.0.1";
   std::uint16_t port = 8765;  ///< 0: any free port (port() tells which)
   std::size_t client_queue_bytes = 16u << 20;
   std::string name = "kestrel";  ///< serverInfo's name

@@ -34,7 +34,7 @@ struct RunArgs : GraphArgs {
   bool stats = false;
   bool progress = true;
   std::string record;                 // --record FILE.mcap: a recorder node is added
-  std::optional<int> live;            // --live PORT: a foxglove_bridge node is added
+  std::optional<std::string> live;    // --live [ADDRESS:]PORT: a foxglove_bridge node is added
   std::optional<std::string> topics;  // --topics PATTERNS for it
 };
 

@@ -13,6 +13,7 @@
 #include "commands.hpp"
 #include "graph_loading.hpp"
 #include "kestrel/runtime/run.hpp"
+#include "live_endpoint.hpp"
 #include "output_files.hpp"
 
 namespace kestrel::cli {
@@ -74,9 +75,16 @@ int run_command(const RunArgs& args) {
     spdlog::error("--topics chooses what --record records; give --record FILE.mcap too");
     return kUsage;
   }
-  if (args.live)
+  if (args.live) {
+    const auto endpoint = parse_live_endpoint(*args.live);
+    if (!endpoint) {
+      spdlog::error("--live takes PORT or ADDRESS:PORT (0 to 65535), not '{}'", *args.live);
+      return kUsage;
+    }
+    const nlohmann::json params = {{"port", endpoint->port}, {"address", endpoint->address}};
     with_extras.fragments.push_back(
-        {"--live", "nodes: [{id: live, type: foxglove_bridge, params: {port: " + std::to_string(*args.live) + "}}]"});
+        {"--live", "nodes: [{id: live, type: foxglove_bridge, params: " + params.dump() + "}]"});
+  }
   auto loaded = load_graph(with_extras);
   if (!loaded.graph) return kInvalidGraph;
   RunOptions options;

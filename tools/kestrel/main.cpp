@@ -34,11 +34,10 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("!--no-progress", run.progress, "no status line on the terminal");
   run_cmd->add_option("--record", run.record,
                       "record the run into FILE.mcap (ROS 2 messages; a `recorder` node is added, docs/recording.md)");
-  run_cmd
-      ->add_option("--live", run.live,
-                   "serve the run live on this port over the Foxglove WebSocket protocol (a `foxglove_bridge` node "
-                   "is added; open ws://HOST:PORT in Foxglove or Lichtblick, docs/recording.md)")
-      ->check(CLI::Range(0, 65535));
+  run_cmd->add_option("--live", run.live,
+                      "serve the run live over the Foxglove WebSocket protocol on PORT of this machine (127.0.0.1), or "
+                      "on ADDRESS:PORT (0.0.0.0:8765: every interface, with a warning) (a `foxglove_bridge` node is "
+                      "added; open ws://HOST:PORT in Foxglove or Lichtblick, docs/recording.md)");
   run_cmd->add_option("--topics", run.topics,
                       "what --record records: topic patterns /NODE/PORT, '*' for all, '!PATTERN' to leave out "
                       "(default: every connection but point clouds)");

@@ -16,11 +16,13 @@
 #include "kestrel/testing/graphs.hpp"
 #include "kestrel/testing/read_file.hpp"
 #include "kestrel/testing/scratch_path.hpp"
+#include "live_endpoint.hpp"
 
 extern char** environ;
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 using kestrel::testing::read_file;
 
@@ -493,4 +495,34 @@ TEST(Cli, PlotReadsMetricsMeta) {
                      (dir / "missing.json").string()},
                     &out),
             2);
+}
+
+// --live PORT serves this machine only; ADDRESS:PORT opens the view elsewhere, with a warning.
+TEST(Cli, LiveListensOnThisMachineUnlessAnAddressIsGiven) {
+  using kestrel::cli::parse_live_endpoint;
+  ASSERT_TRUE(parse_live_endpoint("8765"));
+  EXPECT_EQ(parse_live_endpoint("8765")->address, "127.0.0.1");
+  EXPECT_EQ(parse_live_endpoint("8765")->port, 8765);
+  EXPECT_EQ(parse_live_endpoint("0.0.0.0:9000")->address, "0.0.0.0");
+  EXPECT_EQ(parse_live_endpoint("0.0.0.0:9000")->port, 9000);
+  EXPECT_EQ(parse_live_endpoint("[::1]:0")->address, "::1");
+  for (const char* bad : {"", "abc", "65536", "-1", ":8765", "host:", "host:80x", "8765 "})
+    EXPECT_FALSE(parse_live_endpoint(bad)) << bad;
+
+  const fs::path dir = temp_dir("live");
+  const fs::path graph = write_graph(dir, R"(nodes:
+  - {id: src, type: counter_source, params: {count: 3}}
+  - {id: sink, type: collector}
+connections:
+  - {from: src.out, to: sink.in}
+)");
+  std::string out;
+  EXPECT_EQ(run_cli({"run", graph.string(), "--no-progress", "--live", "0"}, &out), 0);
+  EXPECT_THAT(out, HasSubstr("live view: foxglove.websocket.v1 on ws://127.0.0.1:"));
+  EXPECT_THAT(out, Not(HasSubstr("open to the network")));
+  EXPECT_EQ(run_cli({"run", graph.string(), "--no-progress", "--live", "0.0.0.0:0"}, &out), 0);
+  EXPECT_THAT(out, HasSubstr("ws://0.0.0.0:"));
+  EXPECT_THAT(out, HasSubstr("open to the network without authentication"));
+  EXPECT_EQ(run_cli({"run", graph.string(), "--live", "eighty"}, &out), 2);
+  EXPECT_THAT(out, HasSubstr("--live takes PORT or ADDRESS:PORT (0 to 65535), not 'eighty'"));
 }
