@@ -28,6 +28,14 @@ using kestrel::testing::read_file;
 
 namespace {
 
+// Three numbers from a source to a sink: the smallest graph that runs.
+constexpr const char* kCountToThree = R"(nodes:
+  - {id: src, type: counter_source, params: {count: 3}}
+  - {id: sink, type: collector}
+connections:
+  - {from: src.out, to: sink.in}
+)";
+
 fs::path temp_dir(const std::string& name) {
   const fs::path dir = kestrel::testing::scratch_path("kestrel-cli-" + name);
   fs::remove_all(dir);
@@ -271,12 +279,7 @@ connections:
 TEST(Cli, SweepAndAbExitAsRunDoesOnAnInvalidGraph) {
   const fs::path dir = temp_dir("experiment-codes");
   const fs::path bad = write_graph(temp_dir("experiment-bad"), "nodes:\n  - {id: a, type: relai}\n");
-  const fs::path good = write_graph(dir, R"(nodes:
-  - {id: src, type: counter_source, params: {count: 3}}
-  - {id: sink, type: collector}
-connections:
-  - {from: src.out, to: sink.in}
-)");
+  const fs::path good = write_graph(dir, kCountToThree);
   const std::string missing = (dir / "missing.yaml").string();
   std::string out;
   auto report = [&](const std::string& name) { return (dir / name).string(); };
@@ -433,12 +436,7 @@ TEST(Cli, FailedWritesNameTheFileAndExitOne) {
   EXPECT_EQ(run_cli({"plot", csv, "--x", "x", "--y", "y", "-o", (dir / "blocker" / "p.png").string()}, &out), 1);
   EXPECT_THAT(out, HasSubstr("blocker/p.png"));
 
-  const fs::path graph = write_graph(dir, R"(nodes:
-  - {id: src, type: counter_source, params: {count: 3}}
-  - {id: sink, type: collector}
-connections:
-  - {from: src.out, to: sink.in}
-)");
+  const fs::path graph = write_graph(dir, kCountToThree);
   EXPECT_EQ(run_cli({"dot", graph.string(), "-o", "/dev/full"}, &out), 1) << out;
   EXPECT_THAT(out, HasSubstr("cannot write /dev/full"));
 
@@ -510,12 +508,7 @@ TEST(Cli, LiveListensOnThisMachineUnlessAnAddressIsGiven) {
     EXPECT_FALSE(parse_live_endpoint(bad)) << bad;
 
   const fs::path dir = temp_dir("live");
-  const fs::path graph = write_graph(dir, R"(nodes:
-  - {id: src, type: counter_source, params: {count: 3}}
-  - {id: sink, type: collector}
-connections:
-  - {from: src.out, to: sink.in}
-)");
+  const fs::path graph = write_graph(dir, kCountToThree);
   std::string out;
   EXPECT_EQ(run_cli({"run", graph.string(), "--no-progress", "--live", "0"}, &out), 0);
   EXPECT_THAT(out, HasSubstr("live view: foxglove.websocket.v1 on ws://127.0.0.1:"));
