@@ -12,17 +12,19 @@ constexpr std::size_t kKeptAcks = 64, kKeptTexts = 64;
 
 }  // namespace
 
-std::shared_ptr<Link> Link::open(const std::string& url) {
+std::shared_ptr<Link> Link::open(const std::string& url, const LinkOptions& options) {
   static std::mutex mutex;
   static std::map<std::string, std::weak_ptr<Link>> links;
   std::lock_guard lock(mutex);
   if (auto existing = links[url].lock()) return existing;
-  auto link = std::make_shared<Link>(open_transport(parse_connection_url(url)));
+  auto link = std::make_shared<Link>(open_transport(parse_connection_url(url)), options);
   links[url] = link;
   return link;
 }
 
-Link::Link(std::unique_ptr<Transport> transport) : transport_(std::move(transport)) {
+Link::Link(std::unique_ptr<Transport> transport, const LinkOptions& options)
+    : transport_(std::move(transport)), options_(options), system_id_(options.autopilot_system_id) {
+  transport_->set_pinning(options_.pin_peer);
   reader_ = std::thread([this] { read_loop(); });
 }
 
@@ -46,22 +48,46 @@ void Link::read_loop() {
     }
     const auto frames = parser.feed(std::span(buffer.data(), n));
     std::lock_guard lock(mutex_);
+    autopilot_heard_ = false;
     for (const Frame& f : frames) take(f);
     view_.parser = parser.counts();
+    keep_the_peer(LinkClock::now());
   }
+}
+
+// The peer is pinned by the autopilot's heartbeat, and let go when it has been silent longer
+// than the timeout: a rebooted autopilot on a new port is found again, an impostor never
+// displaces it while it speaks.
+void Link::keep_the_peer(LinkClock::time_point now) {
+  if (!options_.pin_peer) return;
+  if (view_.peer_pinned && view_.heartbeat_at &&
+      std::chrono::duration<double>(now - *view_.heartbeat_at).count() > options_.heartbeat_timeout_s) {
+    transport_->unpin();
+    view_.peer_pinned = false;
+  }
+  if (autopilot_heard_ && !view_.peer_pinned) {
+    transport_->pin_sender();
+    view_.peer_pinned = true;
+    ++view_.pins;
+  }
+  view_.foreign_datagrams = transport_->foreign_datagrams();
 }
 
 void Link::take(const Frame& f) {
   const auto now = LinkClock::now();
+  if (f.system_id != options_.autopilot_system_id) {
+    ++view_.other_system_frames;  // another vehicle, or a ground station: not ours to follow
+    return;
+  }
   if (f.is<Heartbeat>()) {
     const auto hb = f.as<Heartbeat>();
     if (hb.autopilot == mav::autopilot_invalid) return;  // a ground station or another companion
+    autopilot_heard_ = true;
     view_.heartbeat = hb;
     view_.heartbeat_at = now;
     ++view_.heartbeat_count;
     view_.system_id = f.system_id;
     view_.component_id = f.component_id;
-    system_id_ = f.system_id;  // a companion speaks as part of its vehicle's system
   } else if (f.is<LocalPositionNed>()) {
     view_.position = f.as<LocalPositionNed>();
     view_.position_at = now;

@@ -41,14 +41,28 @@ struct VehicleView {
   std::uint8_t system_id = 0;     ///< the autopilot's, from its heartbeat (0 until heard)
   std::uint8_t component_id = 0;  ///< likewise
   ParserCounts parser;
+  bool peer_pinned = false;               ///< udpin: locked onto the autopilot's address
+  std::uint64_t pins = 0;                 ///< times a peer was pinned (again after a silence)
+  std::uint64_t foreign_datagrams = 0;    ///< dropped: from another address than the pinned peer
+  std::uint64_t other_system_frames = 0;  ///< ignored: from another MAVLink system than the autopilot's
+};
+
+/// Whom the link listens to.
+struct LinkOptions {
+  std::uint8_t autopilot_system_id = 1;  ///< frames of other systems are ignored
+  /// udpin: lock onto the first address the autopilot's heartbeat comes from, and stay locked
+  /// while its heartbeats keep coming (udpout and serial are pinned by construction).
+  bool pin_peer = true;
+  double heartbeat_timeout_s = 1.5;  ///< a pinned peer silent this long is let go
 };
 
 class Link {
  public:
-  /// The process's link for `url`, opened on first use. Throws kestrel::Error (the URL, the cause).
-  static std::shared_ptr<Link> open(const std::string& url);
+  /// The process's link for `url`, opened on first use (with the options of that first use).
+  /// Throws kestrel::Error (the URL, the cause).
+  static std::shared_ptr<Link> open(const std::string& url, const LinkOptions& options = {});
   /// A link over a transport of the caller's (tests).
-  explicit Link(std::unique_ptr<Transport> transport);
+  explicit Link(std::unique_ptr<Transport> transport, const LinkOptions& options = {});
   ~Link();
   Link(const Link&) = delete;
   Link& operator=(const Link&) = delete;
@@ -72,16 +86,19 @@ class Link {
   bool send_frame(const std::vector<std::uint8_t>& frame);
   void read_loop();
   void take(const Frame& frame);
+  void keep_the_peer(LinkClock::time_point now);
 
   std::unique_ptr<Transport> transport_;
-  mutable std::mutex mutex_;  // guards what the reader writes
+  LinkOptions options_;
+  bool autopilot_heard_ = false;  // in the datagram just read (reader thread only)
+  mutable std::mutex mutex_;      // guards what the reader writes
   VehicleView view_;
   std::deque<CommandAck> acks_;
   std::deque<StatusText> texts_;
   std::optional<std::string> failure_;
   std::mutex send_mutex_;  // taken before mutex_, never after
   std::uint8_t sequence_ = 0;
-  std::atomic<std::uint8_t> system_id_{1};
+  std::atomic<std::uint8_t> system_id_;
   std::atomic<bool> failed_{false};
   std::atomic<bool> stop_{false};
   std::thread reader_;

@@ -18,6 +18,7 @@
 
 #include "kestrel/mavlink/connection_param.hpp"
 #include "link.hpp"
+#include "link_options_param.hpp"
 #include "link_status.hpp"
 #include "offboard_session.hpp"
 #include "setpoint_guard.hpp"
@@ -48,6 +49,7 @@ struct MavlinkSinkConfig {
   double hover_thrust = 0.5;
   double command_timeout_s = 0.5;
   double heartbeat_timeout_s = 1.5;
+  PeerConfig peer;
   double connect_timeout_s = 10.0;
   double ack_timeout_s = 1.0;
   std::int64_t retries = 3;
@@ -97,6 +99,7 @@ class MavlinkSink final : public Node {
         .with_unit("s")
         .range(0.1, 60.0)
         .describe("the autopilot is lost when its last heartbeat is older: commanding stops");
+    declare_peer(c, &C::peer);
     c.param("connect_timeout_s", &C::connect_timeout_s)
         .with_unit("s")
         .range(0.1, 600.0)
@@ -132,7 +135,7 @@ class MavlinkSink final : public Node {
       : cfg_(init.config<MavlinkSinkConfig>()),
         guard_(GuardLimits{cfg_.fence_min_m, cfg_.fence_max_m, cfg_.max_speed_m_s, cfg_.max_tilt_deg}),
         session_(SessionOptions{cfg_.prestream_s, cfg_.arm, cfg_.ack_timeout_s, static_cast<int>(cfg_.retries)}) {
-    link_ = Link::open(cfg_.connection);
+    link_ = Link::open(cfg_.connection, link_options(cfg_.peer, cfg_.heartbeat_timeout_s));
     init.set_rate(cfg_.rate_hz);
   }
 
@@ -199,6 +202,9 @@ class MavlinkSink final : public Node {
         ctx.id(),
         ReportSection()
             .info("connection", cfg_.connection)
+            .metric("foreign_datagrams", link_->view().foreign_datagrams, "", Better::lower)
+            .metric("other_system_frames", link_->view().other_system_frames, "frames", Better::lower)
+            .quantity("peer_pins", link_->view().pins)
             .info("phase", session_.phase_name())
             .info("refusal", session_.refusal())
             .quantity("setpoints", setpoints_)

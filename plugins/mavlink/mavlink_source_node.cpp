@@ -8,6 +8,7 @@
 
 #include "kestrel/mavlink/connection_param.hpp"
 #include "link.hpp"
+#include "link_options_param.hpp"
 #include "link_status.hpp"
 #include "vehicle_state_conversion.hpp"
 
@@ -20,6 +21,7 @@ struct MavlinkSourceConfig {
   double rate_hz = 100.0;
   double status_rate_hz = 5.0;
   double heartbeat_timeout_s = 1.5;
+  PeerConfig peer;
 };
 
 class MavlinkSource final : public Node {
@@ -48,6 +50,7 @@ class MavlinkSource final : public Node {
         .with_unit("s")
         .range(0.1, 60.0)
         .describe("the link is down when the autopilot's last heartbeat is older");
+    declare_peer(c, &C::peer);
     return NodeSpec("mavlink_source", "The vehicle's state and status from its autopilot over MAVLink")
         .details(
             "Publishes a VehicleState for each new position or odometry message, converted from NED/FRD to kestrel's "
@@ -60,7 +63,7 @@ class MavlinkSource final : public Node {
   }
 
   explicit MavlinkSource(NodeInit& init) : cfg_(init.config<MavlinkSourceConfig>()) {
-    link_ = Link::open(cfg_.connection);
+    link_ = Link::open(cfg_.connection, link_options(cfg_.peer, cfg_.heartbeat_timeout_s));
     init.set_rate(cfg_.rate_hz);
   }
 
@@ -88,6 +91,9 @@ class MavlinkSource final : public Node {
         ctx.id(),
         ReportSection()
             .info("connection", cfg_.connection)
+            .metric("foreign_datagrams", link_->view().foreign_datagrams, "", Better::lower)
+            .metric("other_system_frames", link_->view().other_system_frames, "frames", Better::lower)
+            .quantity("peer_pins", link_->view().pins)
             .quantity("frames", p.frames)
             .metric("bad_checksum", p.bad_checksum, "frames", Better::lower)
             .metric("unknown_id", p.unknown_id, "frames", Better::lower)

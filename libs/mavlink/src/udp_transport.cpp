@@ -29,6 +29,10 @@ sockaddr_in resolve(const std::string& host, std::uint16_t port, const std::stri
   return address;
 }
 
+bool same_address(const sockaddr_in& a, const sockaddr_in& b) {
+  return a.sin_addr.s_addr == b.sin_addr.s_addr && a.sin_port == b.sin_port;
+}
+
 std::string text_of(const sockaddr_in& a) {
   char host[INET_ADDRSTRLEN] = {};
   ::inet_ntop(AF_INET, &a.sin_addr, host, sizeof host);
@@ -91,8 +95,15 @@ std::size_t UdpTransport::receive(std::span<std::uint8_t> buffer, std::chrono::m
     }
     if (url_.kind == ConnectionUrl::Kind::udp_in) {
       std::lock_guard lock(peer_mutex_);
-      peer_ = from;
-      have_peer_ = true;
+      if (pinned_ && !same_address(from, peer_)) {
+        ++foreign_;  // not the pinned autopilot: dropped, never answered
+        continue;
+      }
+      last_from_ = from;
+      if (!pinning_) {
+        peer_ = from;
+        have_peer_ = true;
+      }
     }
     return static_cast<std::size_t>(n);
   }
@@ -102,8 +113,30 @@ std::string UdpTransport::describe() const {
   std::string text =
       (url_.kind == ConnectionUrl::Kind::udp_in ? "udpin " : "udpout ") + url_.host + ":" + std::to_string(url_.port);
   std::lock_guard lock(peer_mutex_);
-  if (have_peer_) text += ", peer " + text_of(peer_);
+  if (have_peer_) text += ", peer " + text_of(peer_) + (pinned_ ? " (pinned)" : "");
+  if (foreign_ > 0) text += ", " + std::to_string(foreign_) + " datagram(s) from elsewhere dropped";
   return text;
+}
+
+void UdpTransport::set_pinning(bool on) {
+  if (url_.kind != ConnectionUrl::Kind::udp_in) return;  // udpout has its one peer already
+  std::lock_guard lock(peer_mutex_);
+  pinning_ = on;
+  if (on && !pinned_) have_peer_ = false;  // nobody is answered before the autopilot is heard
+}
+
+void UdpTransport::pin_sender() {
+  if (url_.kind != ConnectionUrl::Kind::udp_in) return;
+  std::lock_guard lock(peer_mutex_);
+  peer_ = last_from_;
+  have_peer_ = pinned_ = true;
+}
+
+void UdpTransport::unpin() {
+  if (url_.kind != ConnectionUrl::Kind::udp_in) return;
+  std::lock_guard lock(peer_mutex_);
+  pinned_ = false;
+  if (pinning_) have_peer_ = false;
 }
 
 std::uint16_t UdpTransport::local_port() const {

@@ -219,6 +219,25 @@ TEST(LiveServer, ListeningOnAPortInUseNamesTheAddress) {
   }
 }
 
+// Listening on 127.0.0.1 (the default) is this machine's loopback only: a client coming through
+// another local address, 127.0.0.2, is refused; listening on every interface lets it in.
+TEST(LiveServer, TheDefaultAddressServesOnlyThisMachinesLoopback) {
+  const auto reaches = [](std::uint16_t port) {
+    asio::io_context io;
+    tcp::socket socket(io);
+    boost::system::error_code ec;
+    socket.connect({asio::ip::make_address("127.0.0.2"), port}, ec);
+    return !ec;
+  };
+  kf::LiveServer local(loopback());
+  EXPECT_FALSE(reaches(local.port()));
+  kf::LiveServerOptions open = loopback();
+  open.address = "0.0.0.0";
+  kf::LiveServer everywhere(open);
+  EXPECT_TRUE(reaches(everywhere.port()));
+  EXPECT_EQ(kf::LiveServerOptions{}.address, "127.0.0.1");
+}
+
 TEST(LiveServer, StopsWithClientsConnected) {
   kf::LiveServer server(loopback());
   Client a(server.port());

@@ -30,7 +30,9 @@ bool eventually(Predicate done) {
 TEST(MavlinkLink, KeepsTheAutopilotsLatestStateAndSpeaksAsItsCompanion) {
   auto transport = kestrel::testing::listening_udp();
   const std::uint16_t port = transport->local_port();
-  Link link(std::move(transport));
+  LinkOptions options;
+  options.autopilot_system_id = 7;
+  Link link(std::move(transport), options);
   UdpTransport vehicle(parse_connection_url("udpout://127.0.0.1:" + std::to_string(port)));
   FrameWriter autopilot({7, mav::comp_autopilot1});
   FrameWriter ground_station({255, 190});
@@ -73,6 +75,69 @@ TEST(MavlinkLink, KeepsTheAutopilotsLatestStateAndSpeaksAsItsCompanion) {
   EXPECT_EQ(frames[0].system_id, 7) << "a companion speaks as part of its vehicle's system";
   EXPECT_EQ(frames[0].component_id, mav::comp_onboard_computer);
   EXPECT_EQ(frames[0].as<CommandLong>().param1, 1.0f);
+}
+
+// The attack of a spoofed heartbeat: an impostor on the same machine claims the autopilot's ids
+// from another port. The link stays locked onto the real autopilot's address while its heartbeats
+// come, never answers the impostor, and counts what it dropped; after the autopilot has been
+// silent longer than the heartbeat timeout, whoever speaks as the autopilot next is pinned.
+TEST(MavlinkLink, APinnedPeerIsNotTakenOverByASpoofedHeartbeat) {
+  auto transport = kestrel::testing::listening_udp();
+  const std::uint16_t port = transport->local_port();
+  LinkOptions options;
+  options.heartbeat_timeout_s = 0.3;
+  Link link(std::move(transport), options);
+  const std::string url = "udpout://127.0.0.1:" + std::to_string(port);
+  UdpTransport autopilot(parse_connection_url(url)), impostor(parse_connection_url(url));
+  FrameWriter real_ids({1, mav::comp_autopilot1}), spoofed_ids({1, mav::comp_autopilot1});
+  Heartbeat hb;
+  hb.autopilot = mav::autopilot_px4;
+  hb.type = mav::type_quadrotor;
+  std::array<std::uint8_t, 512> buffer{};
+
+  EXPECT_FALSE(link.send(Heartbeat{})) << "nobody is answered before the autopilot is heard";
+  autopilot.send(real_ids.encode(hb));
+  ASSERT_TRUE(eventually([&] { return link.view().peer_pinned; }));
+  EXPECT_THAT(link.describe(), ::testing::HasSubstr("(pinned)"));
+
+  for (int i = 0; i < 5; ++i) {
+    impostor.send(spoofed_ids.encode(hb));
+    autopilot.send(real_ids.encode(hb));
+    std::this_thread::sleep_for(20ms);
+  }
+  ASSERT_TRUE(eventually([&] { return link.view().foreign_datagrams == 5 && link.view().heartbeat_count == 6; }))
+      << "only the real autopilot's 6 heartbeats count; " << link.view().heartbeat_count << " counted, "
+      << link.view().foreign_datagrams << " dropped";
+  ASSERT_TRUE(link.send(CommandLong{}));
+  EXPECT_GT(autopilot.receive(buffer, 1000ms), 0u);
+  EXPECT_EQ(impostor.receive(buffer, 200ms), 0u) << "the impostor is never answered";
+
+  // The autopilot falls silent: after the timeout the link lets it go, and the next heartbeat pins
+  // its sender (here the impostor: without signing, nothing tells them apart).
+  std::this_thread::sleep_for(450ms);
+  ASSERT_TRUE(eventually([&] { return !link.view().peer_pinned; }));
+  impostor.send(spoofed_ids.encode(hb));
+  ASSERT_TRUE(eventually([&] { return link.view().peer_pinned && link.view().pins == 2; }));
+  ASSERT_TRUE(link.send(CommandLong{}));
+  EXPECT_GT(impostor.receive(buffer, 1000ms), 0u);
+}
+
+TEST(MavlinkLink, FramesOfOtherSystemsAreIgnoredAndCounted) {
+  auto transport = kestrel::testing::listening_udp();
+  const std::uint16_t port = transport->local_port();
+  Link link(std::move(transport));
+  UdpTransport vehicle(parse_connection_url("udpout://127.0.0.1:" + std::to_string(port)));
+  FrameWriter other_vehicle({2, mav::comp_autopilot1});
+  Heartbeat hb;
+  hb.autopilot = mav::autopilot_px4;
+  vehicle.send(other_vehicle.encode(hb));
+  LocalPositionNed p;
+  p.x = 5.0f;
+  vehicle.send(other_vehicle.encode(p));
+  ASSERT_TRUE(eventually([&] { return link.view().other_system_frames == 2; }));
+  EXPECT_EQ(link.view().heartbeat_count, 0u);
+  EXPECT_EQ(link.view().position_count, 0u);
+  EXPECT_FALSE(link.view().peer_pinned);
 }
 
 TEST(MavlinkLink, OneUrlIsOneLinkInTheProcess) {

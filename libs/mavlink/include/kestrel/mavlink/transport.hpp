@@ -24,6 +24,18 @@ class Transport {
   virtual std::size_t receive(std::span<std::uint8_t> buffer, std::chrono::milliseconds timeout) = 0;
   /// Where it is connected, for messages ("udpin 0.0.0.0:14540, peer 127.0.0.1:40121").
   virtual std::string describe() const = 0;
+
+  // A pinned peer (udpin; udpout and serial links have one peer by construction and ignore
+  // these). With pinning on, nothing is sent until a peer is pinned, and once it is, only its
+  // datagrams are received: others are dropped and counted, never answered.
+  /// Turns pinning on: the link pins a peer once it has heard the autopilot from it.
+  virtual void set_pinning(bool /*on*/) {}
+  /// Pins the sender of the datagram receive() returned last.
+  virtual void pin_sender() {}
+  /// Forgets the pinned peer (silent too long): the next peer heard can be pinned.
+  virtual void unpin() {}
+  /// Datagrams dropped because they came from another address than the pinned peer.
+  virtual std::uint64_t foreign_datagrams() const { return 0; }
 };
 
 /// Opens the transport a URL names. Throws kestrel::Error naming the URL and the cause.
