@@ -25,14 +25,20 @@ bool eventually(Predicate done) {
   return false;
 }
 
+// A link listening on a free loopback port, and that port.
+std::pair<std::unique_ptr<Link>, std::uint16_t> listening_link(const LinkOptions& options = {}) {
+  auto transport = kestrel::testing::listening_udp();
+  const std::uint16_t port = transport->local_port();
+  return {std::make_unique<Link>(std::move(transport), options), port};
+}
+
 }  // namespace
 
 TEST(MavlinkLink, KeepsTheAutopilotsLatestStateAndSpeaksAsItsCompanion) {
-  auto transport = kestrel::testing::listening_udp();
-  const std::uint16_t port = transport->local_port();
   LinkOptions options;
   options.autopilot_system_id = 7;
-  Link link(std::move(transport), options);
+  auto [owned, port] = listening_link(options);
+  Link& link = *owned;
   UdpTransport vehicle(parse_connection_url("udpout://127.0.0.1:" + std::to_string(port)));
   FrameWriter autopilot({7, mav::comp_autopilot1});
   FrameWriter ground_station({255, 190});
@@ -82,11 +88,10 @@ TEST(MavlinkLink, KeepsTheAutopilotsLatestStateAndSpeaksAsItsCompanion) {
 // come, never answers the impostor, and counts what it dropped; after the autopilot has been
 // silent longer than the heartbeat timeout, whoever speaks as the autopilot next is pinned.
 TEST(MavlinkLink, APinnedPeerIsNotTakenOverByASpoofedHeartbeat) {
-  auto transport = kestrel::testing::listening_udp();
-  const std::uint16_t port = transport->local_port();
   LinkOptions options;
   options.heartbeat_timeout_s = 0.3;
-  Link link(std::move(transport), options);
+  auto [owned, port] = listening_link(options);
+  Link& link = *owned;
   const std::string url = "udpout://127.0.0.1:" + std::to_string(port);
   UdpTransport autopilot(parse_connection_url(url)), impostor(parse_connection_url(url));
   FrameWriter real_ids({1, mav::comp_autopilot1}), spoofed_ids({1, mav::comp_autopilot1});
@@ -123,9 +128,8 @@ TEST(MavlinkLink, APinnedPeerIsNotTakenOverByASpoofedHeartbeat) {
 }
 
 TEST(MavlinkLink, FramesOfOtherSystemsAreIgnoredAndCounted) {
-  auto transport = kestrel::testing::listening_udp();
-  const std::uint16_t port = transport->local_port();
-  Link link(std::move(transport));
+  auto [owned, port] = listening_link();
+  Link& link = *owned;
   UdpTransport vehicle(parse_connection_url("udpout://127.0.0.1:" + std::to_string(port)));
   FrameWriter other_vehicle({2, mav::comp_autopilot1});
   Heartbeat hb;
