@@ -23,7 +23,7 @@ std::shared_ptr<Link> Link::open(const std::string& url, const LinkOptions& opti
 }
 
 Link::Link(std::unique_ptr<Transport> transport, const LinkOptions& options)
-    : transport_(std::move(transport)), options_(options), system_id_(options.autopilot_system_id) {
+    : transport_(std::move(transport)), options_(options) {
   transport_->set_pinning(options_.pin_peer);
   reader_ = std::thread([this] { read_loop(); });
 }

@@ -71,12 +71,13 @@ class Link {
   /// Acknowledgements and status texts received since the last call.
   std::vector<CommandAck> take_acks();
   std::vector<StatusText> take_texts();
-  /// Sends as the companion computer (the autopilot's system id once heard, component 191).
+  /// Sends as the companion computer: the autopilot's system id (autopilot_system_id), component 191.
   /// False when nobody can be sent to yet (udpin before the autopilot spoke) or the link failed.
   template <class M>
   bool send(const M& message) {
     std::lock_guard lock(send_mutex_);
-    return send_frame(encode_v2(M::definition(), &message, {system_id_, mav::comp_onboard_computer}, sequence_++));
+    return send_frame(
+        encode_v2(M::definition(), &message, {options_.autopilot_system_id, mav::comp_onboard_computer}, sequence_++));
   }
   std::string describe() const;
   /// Why the reader stopped (the device went away), if it did.
@@ -98,7 +99,6 @@ class Link {
   std::optional<std::string> failure_;
   std::mutex send_mutex_;  // taken before mutex_, never after
   std::uint8_t sequence_ = 0;
-  std::atomic<std::uint8_t> system_id_;
   std::atomic<bool> failed_{false};
   std::atomic<bool> stop_{false};
   std::thread reader_;

@@ -51,13 +51,6 @@ const std::vector<Airframe>& airframes() {
 
 }  // namespace
 
-double Airframe::max_thrust_n() const {
-  return static_cast<double>(body.rotors.size()) * body.thrust_constant * body.max_rotor_speed_rad_s *
-         body.max_rotor_speed_rad_s;
-}
-
-double Airframe::thrust_to_weight(double gravity) const { return max_thrust_n() / (body.mass_kg * gravity); }
-
 const Airframe& airframe(std::string_view name) {
   for (const Airframe& a : airframes())
     if (a.name == name) return a;

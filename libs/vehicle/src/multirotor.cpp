@@ -38,6 +38,10 @@ Eigen::MatrixXd Multirotor::allocation_inverse() const {
   return wrench_matrix().completeOrthogonalDecomposition().pseudoInverse();
 }
 
+double Multirotor::max_thrust_n() const {
+  return static_cast<double>(rotors.size()) * thrust_constant * max_rotor_speed_rad_s * max_rotor_speed_rad_s;
+}
+
 double Multirotor::hover_rotor_speed_rad_s(double gravity) const {
   return std::sqrt(mass_kg * gravity / (thrust_constant * static_cast<double>(rotors.size())));
 }

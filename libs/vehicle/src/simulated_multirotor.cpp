@@ -40,10 +40,7 @@ void SimulatedMultirotor::command_wrench(double thrust_n, const Eigen::Vector3d&
   command_rotor_speeds(speeds);
 }
 
-double SimulatedMultirotor::max_thrust_n() const {
-  const Multirotor& v = dynamics_.vehicle();
-  return static_cast<double>(v.rotors.size()) * v.thrust_constant * v.max_rotor_speed_rad_s * v.max_rotor_speed_rad_s;
-}
+double SimulatedMultirotor::max_thrust_n() const { return dynamics_.vehicle().max_thrust_n(); }
 
 void SimulatedMultirotor::advance_to(double t_s, const std::function<void(double)>& before_step) {
   while (simulated_ + step_ <= t_s + 1e-12) {

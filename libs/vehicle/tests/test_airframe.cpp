@@ -39,8 +39,8 @@ TEST(Airframe, NamedByTheParameterWithEachFieldSetReplacingItsOwn) {
 TEST(Airframe, InterceptorHasTheThrustToWeightOfItsClass) {
   const Airframe& a = airframe("interceptor");
   // 4 x 1.408e-6 x 2800^2 N = 44.2 N on 1 kg.
-  EXPECT_NEAR(a.max_thrust_n(), 44.15, 0.01);
-  EXPECT_GE(a.thrust_to_weight(), 4.0);
+  EXPECT_NEAR(a.body.max_thrust_n(), 44.15, 0.01);
+  EXPECT_GE(a.body.thrust_to_weight(), 4.0);
   EXPECT_GE(a.envelope.max_speed_m_s, 15.0);
 }
 

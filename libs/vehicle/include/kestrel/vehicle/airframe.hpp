@@ -35,9 +35,6 @@ struct Airframe {
   Multirotor body;
   LeeGainSet gains;
   FlightEnvelope envelope;
-
-  double max_thrust_n() const;
-  double thrust_to_weight(double gravity = 9.81) const;
 };
 
 /// The airframe of that name; throws kestrel::Error naming the known ones otherwise.

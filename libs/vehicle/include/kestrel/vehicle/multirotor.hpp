@@ -40,6 +40,10 @@ struct Multirotor {
   /// Minimum-norm squared rotor speeds for a wrench: the right pseudo-inverse of wrench_matrix()
   /// (rotors x 4). Computed here once, for the simulator and the controllers alike.
   Eigen::MatrixXd allocation_inverse() const;
+  /// Thrust with every rotor at its top speed, N.
+  double max_thrust_n() const;
+  /// That thrust over the weight.
+  double thrust_to_weight(double gravity = 9.81) const { return max_thrust_n() / (mass_kg * gravity); }
   /// Rotor speed of each rotor when all share the thrust that balances gravity.
   double hover_rotor_speed_rad_s(double gravity = 9.81) const;
 };
