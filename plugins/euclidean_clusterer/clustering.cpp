@@ -3,6 +3,9 @@
 #include <pcl/search/kdtree.h>
 #include <pcl/segmentation/extract_clusters.h>
 
+#include <cmath>
+#include <kestrel/error.hpp>
+
 #include "grid_clustering.hpp"
 
 namespace kestrel::clustering {
@@ -30,12 +33,28 @@ std::vector<std::vector<int>> pcl_clusters(const pcl::PointCloud<pcl::PointXYZ>:
 
 }  // namespace
 
-Clusters find_clusters(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud, const ClusterOptions& o) {
+pcl::PointCloud<pcl::PointXYZ>::Ptr stretch_depth(const pcl::PointCloud<pcl::PointXYZ>& cloud, double tolerance_m,
+                                                  double depth_noise_px, double focal_baseline_px_m) {
+  if (!(focal_baseline_px_m > 0.0))
+    throw Error(
+        "depth_noise_px needs a stereo cloud (focal_baseline_px_m > 0): connect a stereo_depth cloud, through "
+        "filters that keep it");
+  const double root_c = std::sqrt(depth_noise_px / (focal_baseline_px_m * tolerance_m));
+  auto out = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>(cloud);
+  for (auto& p : out->points) p.z = static_cast<float>(std::atan(root_c * p.z) / root_c);
+  return out;
+}
+
+Clusters find_clusters(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud, const ClusterOptions& o,
+                       double focal_baseline_px_m) {
   Clusters result;
   if (!cloud || cloud->empty()) return result;
+  // Clusters are found on the stretched points; detections are made of the points themselves.
+  const pcl::PointCloud<pcl::PointXYZ>::ConstPtr linked =
+      o.depth_noise_px > 0.0 ? stretch_depth(*cloud, o.tolerance_m, o.depth_noise_px, focal_baseline_px_m) : cloud;
   auto clusters = o.method == ClusterOptions::Method::pcl
-                      ? pcl_clusters(cloud, o)
-                      : grid_clusters(*cloud, o.tolerance_m, o.min_points, o.max_points);
+                      ? pcl_clusters(linked, o)
+                      : grid_clusters(*linked, o.tolerance_m, o.min_points, o.max_points);
   for (auto& indices : clusters) {
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());

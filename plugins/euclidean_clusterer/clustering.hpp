@@ -18,6 +18,11 @@ struct ClusterOptions {
   double tolerance_m = 0.5;
   int min_points = 20;
   int max_points = 200;
+  /// Stereo's disparity noise between neighbours, px. Far away a disparity error moves a point a
+  /// long way along its ray (z^2 e / (fx b)), so one object's points spread in depth wider than
+  /// the tolerance and split. With e > 0 the tolerance along the depth axis widens to
+  /// tolerance_m + z^2 e / (fx b) at depth z; 0: the same tolerance everywhere (the paper).
+  double depth_noise_px = 0.0;
 };
 
 struct Clusters {
@@ -25,6 +30,16 @@ struct Clusters {
   std::vector<std::vector<int>> indices;  ///< point indices of each kept cluster
 };
 
-Clusters find_clusters(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud, const ClusterOptions& options);
+/// `focal_baseline_px_m` is the cloud's fx times baseline (msg::PointCloud), needed when
+/// options.depth_noise_px > 0 (kestrel::Error otherwise).
+Clusters find_clusters(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud, const ClusterOptions& options,
+                       double focal_baseline_px_m = 0.0);
+
+/// The depth axis stretched so that a depth-dependent tolerance becomes a constant one: with
+/// c = depth_noise_px / (focal_baseline * tolerance), the tolerance at depth z is
+/// tolerance * (1 + c z^2), and z maps to atan(sqrt(c) z) / sqrt(c), whose slope is
+/// 1 / (1 + c z^2). Near the camera (c z^2 << 1) it is z itself.
+pcl::PointCloud<pcl::PointXYZ>::Ptr stretch_depth(const pcl::PointCloud<pcl::PointXYZ>& cloud, double tolerance_m,
+                                                  double depth_noise_px, double focal_baseline_px_m);
 
 }  // namespace kestrel::clustering

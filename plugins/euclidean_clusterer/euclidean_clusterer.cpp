@@ -36,6 +36,13 @@ class EuclideanClusterer final : public Node {
     c.param("max_points", &Config::clusters, &ClusterOptions::max_points)
         .range(1, 10000000)
         .describe("largest cluster kept (paper: 200)");
+    c.param("depth_noise_px", &Config::clusters, &ClusterOptions::depth_noise_px)
+        .range(0.0, 16.0)
+        .with_unit("px")
+        .describe(
+            "stereo's disparity noise between neighbours: along the depth axis the tolerance widens to tolerance_m "
+            "+ z^2 * depth_noise_px / (fx * b) at depth z, so that a far object whose points spread in depth stays "
+            "one cluster; needs a stereo cloud; 0: the same tolerance everywhere (paper)");
     c.param("snapshot_frame", &Config::snapshot_frame)
         .at_least(-1)
         .describe("cloud index drawn as clusters.png with --report; -1 = none");
@@ -45,7 +52,9 @@ class EuclideanClusterer final : public Node {
                     "Euclidean clusters (as PCL finds them); each cluster's centroid is a detection")
         .details(
             "Points closer than tolerance_m join one cluster. Clusters with fewer than min_points or more than "
-            "max_points points are dropped: they are unlikely to be a drone (paper: 0.5 m, 20, 200). With "
+            "max_points points are dropped: they are unlikely to be a drone (paper: 0.5 m, 20, 200). Beyond "
+            "the paper's range, depth_noise_px widens the tolerance along the depth axis as stereo's depth error "
+            "grows (z^2). With "
             "--report, frame `snapshot_frame` is drawn as clusters.png (front and top views).")
         .input(kCloud, "filtered camera-frame points")
         .output(kDetections, "cluster centroids with point count and extent")
@@ -57,7 +66,7 @@ class EuclideanClusterer final : public Node {
   void process(Context& ctx) override {
     const auto in = ctx.get(kCloud);
     if (!in->points) throw Error("point cloud message without points");
-    const Clusters clusters = find_clusters(in->points, cfg_.clusters);
+    const Clusters clusters = find_clusters(in->points, cfg_.clusters, in->focal_baseline_px_m);
     if (clouds_++ == cfg_.snapshot_frame && ctx.keeps_artifacts())
       ctx.add_artifact("clusters.png", draw(*in->points, clusters), "filtered cloud and its clusters");
     msg::Detections out;

@@ -212,6 +212,7 @@ class StereoDepth final : public Node {
     cloud.points =
         reproject(disparity, pair.calibration, cfg_.min_depth_m, cfg_.max_depth_m, cfg_.pixel_step, foreground);
     cloud.pixels_per_point = cfg_.downscale * cfg_.pixel_step;
+    cloud.focal_baseline_px_m = pair.calibration.fx * pair.calibration.baseline_m;
     if (static_cast<std::int64_t>(frame->frame_index) == cfg_.snapshot_frame && ctx.keeps_artifacts()) {
       ctx.add_artifact("left.png", encode_png(frame->left), "left image");
       ctx.add_artifact("right.png", encode_png(frame->right), "right image");

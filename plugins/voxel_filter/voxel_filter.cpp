@@ -45,6 +45,7 @@ class VoxelFilter final : public Node {
     msg::PointCloud out;
     out.stamp = in->stamp;
     out.frame = in->frame;
+    out.focal_baseline_px_m = in->focal_baseline_px_m;  // voxel centroids keep the stereo's depth noise
     out.points = downsample(*in->points, options_);
     ctx.publish(kFiltered, std::move(out));
   }

@@ -1,5 +1,10 @@
 // kestrel.PointCloud: sensor_msgs/msg/PointCloud2 with float32 x, y, z (12 bytes a point), one
-// row, in the cloud's frame. pixels_per_point travels in the channel's metadata.
+// row, in the cloud's frame. pixels_per_point and focal_baseline_px_m travel in the channel's
+// metadata.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <kestrel/messages/point_cloud.hpp>
 
@@ -13,6 +18,7 @@ namespace point_cloud {
 constexpr std::uint8_t kFloat32 = 7;  // sensor_msgs/PointField FLOAT32
 constexpr std::uint32_t kPointStep = 12;
 const char* const kPixelsPerPoint = "kestrel.pixels_per_point";
+const char* const kFocalBaseline = "kestrel.focal_baseline_px_m";
 
 std::vector<ChannelSpec> channels(const std::string& topic) { return {{topic, "sensor_msgs/msg/PointCloud2", false}}; }
 
@@ -47,6 +53,7 @@ Encoded encode(const void* message, const std::string&) {
   Encoded out;
   out.messages.push_back({0, w.take(), std::nullopt});
   out.metadata[kPixelsPerPoint] = std::to_string(c.pixels_per_point);
+  out.metadata[kFocalBaseline] = fmt::format("{}", c.focal_baseline_px_m);  // shortest text that reads back exactly
   return out;
 }
 
@@ -101,6 +108,13 @@ class PointCloudDecoder final : public Decoder {
       } catch (const std::exception&) {
         throw Error(std::string(kPixelsPerPoint) + " '" + it->second + "' in a channel's metadata is not a number");
       }
+    }
+    if (auto it = metadata.find(kFocalBaseline); it != metadata.end()) {
+      char* end = nullptr;
+      const double value = std::strtod(it->second.c_str(), &end);
+      if (it->second.empty() || *end != '\0' || !std::isfinite(value) || value < 0.0)
+        throw Error(std::string(kFocalBaseline) + " '" + it->second + "' in a channel's metadata is not a number >= 0");
+      cloud->focal_baseline_px_m = value;
     }
     return cloud;
   }

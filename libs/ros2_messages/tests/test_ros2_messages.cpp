@@ -169,11 +169,13 @@ TEST(Ros2Messages, ACloudIsAPointCloud2OfFloatXyzWithItsPixelsPerPointInTheChann
   points->is_dense = true;
   c.points = points;
   c.pixels_per_point = 2;
+  c.focal_baseline_px_m = 36.48;
   auto back = round_trip(c);
   ASSERT_TRUE(back);
   EXPECT_EQ(back->stamp, c.stamp);
   EXPECT_EQ(back->frame, "camera");
   EXPECT_EQ(back->pixels_per_point, 2);
+  EXPECT_EQ(back->focal_baseline_px_m, 36.48);
   ASSERT_EQ(back->points->size(), 2u);
   EXPECT_EQ(back->points->points[0].y, -2.25f);
   EXPECT_EQ(back->points->points[1].z, 0.3f);

@@ -1,6 +1,8 @@
 // The Euclidean clusterer on crafted clouds.
 #include <gmock/gmock.h>
 
+#include <kestrel/error.hpp>
+
 #include "clustering.hpp"
 #include "kestrel/testing/crafted_clouds.hpp"
 
@@ -45,4 +47,50 @@ TEST(EuclideanClusterer, CentroidExtentAndCount) {
   EXPECT_TRUE(d.position.isApprox(Eigen::Vector3d(1.1, -0.4, 4.1), 1e-5));
   EXPECT_TRUE(d.extent.isApprox(Eigen::Vector3d(0.2, 0.2, 0.2), 1e-5));
   EXPECT_TRUE(clustering::find_clusters(std::make_shared<Cloud>(), {}).detections.empty());
+}
+
+// Stereo at fx b = 36.48 px m (the paper's camera at 640x480) with half a pixel of noise: the
+// tolerance along depth is 0.5 + z^2 * 0.5 / 36.48 m, 3.2 m at 14 m and 0.55 m at 2 m.
+TEST(EuclideanClusterer, AFarObjectSpreadInDepthStaysOneClusterWithDepthNoise) {
+  constexpr double kFocalBaseline = 36.48;
+  auto far = std::make_shared<Cloud>();
+  add_block(*far, 0.0f, 0.0f, 14.0f, 3, 0.1f);  // z 14.0 to 14.2
+  add_block(*far, 0.0f, 0.0f, 14.8f, 3, 0.1f);  // 0.6 m further: apart for the paper's 0.5 m
+  clustering::ClusterOptions paper;
+  EXPECT_EQ(clustering::find_clusters(far, paper, kFocalBaseline).detections.size(), 2u);
+  clustering::ClusterOptions noisy;
+  noisy.depth_noise_px = 0.5;
+  const auto joined = clustering::find_clusters(far, noisy, kFocalBaseline);
+  ASSERT_EQ(joined.detections.size(), 1u);
+  EXPECT_EQ(joined.detections[0].point_count, 54);
+  EXPECT_NEAR(joined.detections[0].position.z(), 14.5, 1e-5);  // the points' own centroid, not stretched ones
+  // Near the camera the tolerance is still about the paper's: 0.6 m apart at 2 m stay apart.
+  auto near = std::make_shared<Cloud>();
+  add_block(*near, 0.0f, 0.0f, 2.0f, 3, 0.1f);
+  add_block(*near, 0.0f, 0.0f, 2.8f, 3, 0.1f);
+  EXPECT_EQ(clustering::find_clusters(near, noisy, kFocalBaseline).detections.size(), 2u);
+  // Sideways the tolerance does not grow: 0.6 m apart across at 14 m stay apart.
+  auto side = std::make_shared<Cloud>();
+  add_block(*side, 0.0f, 0.0f, 14.0f, 3, 0.1f);
+  add_block(*side, 0.8f, 0.0f, 14.0f, 3, 0.1f);
+  EXPECT_EQ(clustering::find_clusters(side, noisy, kFocalBaseline).detections.size(), 2u);
+}
+
+TEST(EuclideanClusterer, TheStretchedDepthHasTheToleranceAsItsSlope) {
+  Cloud cloud;
+  for (float z : {0.5f, 5.0f, 10.0f, 15.0f, 15.01f}) cloud.push_back({0.0f, 0.0f, z});
+  const auto stretched = clustering::stretch_depth(cloud, 0.5, 0.5, 36.48);
+  EXPECT_NEAR(stretched->points[0].z, 0.5, 2e-3);  // near: almost unchanged (c z^3 / 3 = 1 mm)
+  // At 15 m a step dz becomes dz / (1 + c z^2), c = 0.5 / (36.48 * 0.5).
+  const double slope = (stretched->points[4].z - stretched->points[3].z) / 0.01;
+  EXPECT_NEAR(slope, 1.0 / (1.0 + 225.0 / 36.48), 2e-3);
+  EXPECT_LT(stretched->points[2].z, stretched->points[3].z);  // order kept
+}
+
+TEST(EuclideanClusterer, DepthNoiseWithoutAStereoCloudIsRefused) {
+  auto cloud = std::make_shared<Cloud>();
+  add_block(*cloud, 0.0f, 0.0f, 5.0f, 3, 0.1f);
+  clustering::ClusterOptions noisy;
+  noisy.depth_noise_px = 0.5;
+  EXPECT_THROW(clustering::find_clusters(cloud, noisy, 0.0), Error);
 }

@@ -17,6 +17,10 @@ struct PointCloud {
   /// full-resolution pixels a side of the left image, centred where it projects (1: one pixel,
   /// 2: matched at half resolution). 0: the points are not image samples (a voxel grid's).
   int pixels_per_point = 0;
+  /// Points from stereo (stereo_depth, and filters that keep them): the matched images' fx times
+  /// the baseline, so that depth = focal_baseline / disparity, and a disparity error of e px
+  /// moves a point at depth z by z^2 e / focal_baseline along its ray. 0: not from stereo.
+  double focal_baseline_px_m = 0.0;
 };
 
 }  // namespace kestrel::msg
@@ -28,4 +32,7 @@ KESTREL_MESSAGE_FIELDS(
     {"points", "pcl::PointCloud<pcl::PointXYZ>::ConstPtr", "m", "in frame", "the points; shared, never modified"},
     {"pixels_per_point", "int", "px", "",
      "image samples: the side of the square of full-resolution left-image pixels each point stands for; 0: not "
-     "image samples"});
+     "image samples"},
+    {"focal_baseline_px_m", "double", "px*m", "",
+     "stereo points: the matched images' fx times the baseline (depth = focal_baseline / disparity); 0: not from "
+     "stereo"});
