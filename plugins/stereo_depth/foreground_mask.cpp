@@ -165,3 +165,15 @@ cv::Mat foreground_mask(const cv::Mat& disparity16, const msg::StereoCalibration
 }
 
 }  // namespace kestrel::stereo
+
+namespace kestrel::stereo {
+
+ForegroundOptions options_for_downscale(ForegroundOptions options, int factor, const MatcherOptions& matcher) {
+  const auto shrink = [&](int px) { return px > 0 ? std::max(1, (px + factor / 2) / factor) : 0; };
+  options.min_thickness_px = shrink(options.min_thickness_px);
+  options.max_hole_px = shrink(options.max_hole_px);
+  options.unseen_left_columns = std::max(0, matcher.min_disparity + matcher.num_disparities);
+  return options;
+}
+
+}  // namespace kestrel::stereo

@@ -12,6 +12,7 @@
 #include <opencv2/core.hpp>
 
 #include "kestrel/messages/stereo_frame.hpp"
+#include "stereo_matching.hpp"
 
 namespace kestrel::stereo {
 
@@ -26,6 +27,12 @@ struct ForegroundOptions {
   /// num_disparities): outside the picture, so what touches them is not judged against them.
   int unseen_left_columns = 0;
 };
+
+/// The options for a disparity map matched on images shrunk by `factor` with `matcher`'s (already
+/// shrunk) disparities: thickness and holes are given in full-resolution pixels and shrink with
+/// the images; the disparity step stays in the matched image's pixels (matching's noise is a
+/// fraction of its own pixels).
+ForegroundOptions options_for_downscale(ForegroundOptions options, int factor, const MatcherOptions& matcher);
 
 /// CV_8U mask of `disparity16` (CV_16S, 1/16 px, <= 0 invalid): 255 where a valid pixel stands
 /// gap_m (and min_step_px) or more in front of both openings of the disparity (invalid counting

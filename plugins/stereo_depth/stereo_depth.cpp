@@ -182,22 +182,12 @@ class StereoDepth final : public Node {
   }
 
   explicit StereoDepth(NodeInit& init) : cfg_(init.config<Config>()) {
-    MatcherOptions options = cfg_.matcher;
-    // Disparities shrink with the images; keep OpenCV's multiple of 16. Speckle regions shrink
-    // with the area: a drone of 100 pixels is 25 at half resolution, not a speckle.
-    options.num_disparities = std::max(16, (options.num_disparities / cfg_.downscale + 15) / 16 * 16);
-    options.speckle_window_size /= cfg_.downscale * cfg_.downscale;
+    const MatcherOptions options = options_for_downscale(cfg_.matcher, cfg_.downscale);
     num_disparities_ = options.num_disparities;
     const bool sgbm_5_path = is_five_path_sgbm(options);
     const int strips = cfg_.strips > 0 ? cfg_.strips : (sgbm_5_path ? 2 : 1);
     matcher_.emplace(options, strips, (cfg_.strip_overlap_px + cfg_.downscale - 1) / cfg_.downscale);
-    // Thickness and holes are in full-resolution pixels; the disparity step stays in the matched
-    // image's (matching's noise is a fraction of its own pixels).
-    foreground_ = cfg_.foreground;
-    const auto shrink = [&](int px) { return px > 0 ? std::max(1, (px + cfg_.downscale / 2) / cfg_.downscale) : 0; };
-    foreground_.min_thickness_px = shrink(foreground_.min_thickness_px);
-    foreground_.max_hole_px = shrink(foreground_.max_hole_px);
-    foreground_.unseen_left_columns = std::max(0, options.min_disparity + options.num_disparities);
+    foreground_ = options_for_downscale(cfg_.foreground, cfg_.downscale, options);
   }
 
   void process(Context& ctx) override {

@@ -93,6 +93,12 @@ pcl::PointCloud<pcl::PointXYZ>::Ptr reproject(const cv::Mat& disparity16, const 
   return cloud;
 }
 
+MatcherOptions options_for_downscale(MatcherOptions options, int factor) {
+  options.num_disparities = std::max(16, (options.num_disparities / factor + 15) / 16 * 16);
+  options.speckle_window_size /= factor * factor;
+  return options;
+}
+
 ScaledPair downscale(const cv::Mat& left, const cv::Mat& right, const msg::StereoCalibration& c, int factor) {
   if (factor < 1) throw Error("downscale factor must be at least 1");
   if (factor == 1) return {left, right, c};

@@ -66,6 +66,11 @@ struct ScaledPair {
 };
 ScaledPair downscale(const cv::Mat& left, const cv::Mat& right, const msg::StereoCalibration& calibration, int factor);
 
+/// The matcher's options for images shrunk by `factor`: disparities shrink with the images (kept a
+/// multiple of 16, as OpenCV needs), speckle regions with the area (a drone of 100 pixels is 25
+/// at half resolution, not a speckle).
+MatcherOptions options_for_downscale(MatcherOptions options, int factor);
+
 /// A disparity map as a colour image for people (invalid pixels black).
 cv::Mat colourise_disparity(const cv::Mat& disparity16, int num_disparities);
 
