@@ -40,6 +40,7 @@ SHAPES = ["figure8", "line", "random"]  # the default
 ALL_SHAPES = SHAPES + ["jink", "evade"]
 MAX_INTRUDER_SPEED = 3.0  # m/s: the default band's top, and where the agile scaling starts
 MAX_WIND = 3.0  # m/s
+DISTANCE = (4.0, 9.0)  # m: the intruder's path from the hunter's start (--distance)
 BAND_SEED_STRIDE = 100000  # band b's seeds start at SEED0 + b * BAND_SEED_STRIDE
 
 
@@ -65,11 +66,22 @@ def vec(v):
     return "[" + ", ".join(f"{x:.3f}" for x in v) + "]"
 
 
-def scenario(seed, band=(0.0, MAX_INTRUDER_SPEED), shapes=SHAPES):
+def parse_distance(text):
+    """'4:9' -> (4.0, 9.0), the range of the intruder's path from the hunter's start, m"""
+    lo, sep, hi = text.partition(":")
+    if not sep:
+        raise SystemExit(f"bad distance '{text}': expected LO:HI in m")
+    lo, hi = float(lo), float(hi)
+    if not 1.0 <= lo <= hi:
+        raise SystemExit(f"bad distance '{text}': expected 1 <= LO <= HI")
+    return lo, hi
+
+
+def scenario(seed, band=(0.0, MAX_INTRUDER_SPEED), shapes=SHAPES, distance_range=DISTANCE):
     rng = random.Random(seed * 7919 + 17)
     shape = shapes[(seed - 1) % len(shapes)]  # each shape as often as the others
     speed_lo, speed_hi = max(band[0], 0.5), band[1]
-    distance = rng.uniform(4.0, 9.0)  # from the hunter's start to the intruder's path
+    distance = rng.uniform(*distance_range)  # from the hunter's start to the intruder's path
     lateral = rng.uniform(-1.5, 1.5)
     height = rng.uniform(2.0, 3.0)  # centre of the path; it stays above the height gate
     wind_speed, wind_dir = rng.uniform(0.0, MAX_WIND), rng.uniform(-math.pi, math.pi)
@@ -142,8 +154,8 @@ def scenario(seed, band=(0.0, MAX_INTRUDER_SPEED), shapes=SHAPES):
     return s
 
 
-def write_scenarios(n, seed0, path, bands=((0.0, MAX_INTRUDER_SPEED),), shapes=SHAPES):
-    rows = [scenario(seed0 + b * BAND_SEED_STRIDE + k, band, shapes)
+def write_scenarios(n, seed0, path, bands=((0.0, MAX_INTRUDER_SPEED),), shapes=SHAPES, distance_range=DISTANCE):
+    rows = [scenario(seed0 + b * BAND_SEED_STRIDE + k, band, shapes, distance_range)
             for b, band in enumerate(bands) for k in range(n)]
     keys = ["seed"] + sorted({k for r in rows for k in r if k != "seed"})
     with open(path, "w", newline="") as f:
@@ -352,6 +364,7 @@ def main(argv):
     p.add_argument("file")
     p.add_argument("--bands", default=None)
     p.add_argument("--shapes", default=",".join(SHAPES))
+    p.add_argument("--distance", default="4:9")
     p = sub.add_parser("summarise")
     p.add_argument("out")
     p.add_argument("label")
@@ -375,7 +388,7 @@ def main(argv):
         shapes = a.shapes.split(",")
         if unknown := [x for x in shapes if x not in ALL_SHAPES]:
             raise SystemExit(f"unknown shape(s) {', '.join(unknown)}: choose from {', '.join(ALL_SHAPES)}")
-        write_scenarios(a.n, a.seed0, a.file, bands, shapes)
+        write_scenarios(a.n, a.seed0, a.file, bands, shapes, parse_distance(a.distance))
     elif a.command == "summarise":
         summarise(a.out, a.label, a.sweep_dirs, parse_bands(a.bands) if a.bands else None, a.seed0)
     elif a.command == "combine":

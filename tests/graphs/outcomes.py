@@ -180,8 +180,8 @@ OUTCOMES = {
         ("any(a['file'] == 'onboard.avi' for a in r['artifacts'])", "the video is in the report"),
     ]),
     # The same engagement with the detection-level camera model: it must end as the rendered one
-    # does (seed 1: fired at 3.4 s, caught at 3.8 s, as the rendered one), with the modelled
-    # detections as good as the rendered chain's.
+    # does (seed 1: fired at 3.37 s, caught at 3.77 s; the rendered one at 3.30 and 3.73 s), with
+    # the modelled detections as good as the rendered chain's.
     "sim_intercept_fast": (30.0, [
         ("r['control']['captured'] is True", "the intruder is caught"),
         ("r['control']['time_to_capture_s'] <= 20.0", "within 20 s"),
