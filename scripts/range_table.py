@@ -15,7 +15,7 @@ import sys
 
 CAMERAS = ["still", "hold", "climb", "turn"]
 SCENES = ["open", "trees"]
-CHAIN = ["depth", "voxels", "clusters", "refine", "gate"]
+CHAIN = ["depth", "voxels", "ground", "clusters", "refine", "gate"]
 # The rig: 0.12 m baseline, 92.8 degree field of view, so fx = 304 px at 640 and 608 px at 1280.
 FOCAL_BASELINE = {"640": 304.0 * 0.12, "1280": 608.0 * 0.12}
 # The stereo error bound drawn beside the measured depth RMSE: a quarter pixel of disparity,
