@@ -19,11 +19,23 @@ struct GroundOptions {
   double ground_z_m = 0.0;  ///< the ground plane's height (world z)
 };
 
-/// For a camera-frame point `p` seen by `camera` (stereo with fx * baseline `focal_baseline`):
-/// its disparity d = focal_baseline / p.z and the ground's along the same ray, d / t, where t is
-/// how many times farther the ray meets the ground than p. The point is ground when
-/// d (1 - 1/t) < margin_px, which holds for every point beneath the plane (t < 1) too. A ray
-/// that never meets the ground (level or up, or a camera beneath the plane) is not ground.
+/// The ground test for one camera pose, set up once per cloud. For a camera-frame point `p` seen
+/// by the camera (stereo with fx * baseline `focal_baseline`): its disparity d = focal_baseline /
+/// p.z and the ground's along the same ray, d / t, where t is how many times farther the ray meets
+/// the ground than p. The point is ground when d (1 - 1/t) < margin_px, which holds for every
+/// point beneath the plane (t < 1) too. A ray that never meets the ground (level or up, or a
+/// camera beneath the plane) is not ground.
+class GroundTest {
+ public:
+  GroundTest(const geometry::CameraPose& camera, double focal_baseline, const GroundOptions& options);
+  bool operator()(const Eigen::Vector3d& p) const;
+
+ private:
+  Eigen::RowVector3d world_z_;  // the camera-frame row that gives a ray's world z change
+  double height_, focal_baseline_, margin_px_;
+};
+
+/// One point: GroundTest(camera, focal_baseline, options)(p).
 bool is_ground(const Eigen::Vector3d& p, const geometry::CameraPose& camera, double focal_baseline,
                const GroundOptions& options);
 
