@@ -33,6 +33,8 @@ if(NOT LZ4_FOUND)
   message(FATAL_ERROR "kestrel needs liblz4 (Debian package liblz4-dev), which was not found. "
                       "Run `make deps` (scripts/install-deps) to install every dependency, then build again.")
 endif()
+# MAVLink 2 signing: SHA-256 and the random source for keys (libcrypto).
+kestrel_require(OpenSSL libssl-dev 3 COMPONENTS Crypto)
 kestrel_require(mrpt-bayes libmrpt-bayes-dev)
 kestrel_require(mrpt-opengl libmrpt-opengl-dev)
 if(KESTREL_BUILD_TESTS)

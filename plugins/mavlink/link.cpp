@@ -10,20 +10,39 @@ namespace {
 // Kept bounded: a node that never asks must not let the link grow without end.
 constexpr std::size_t kKeptAcks = 64, kKeptTexts = 64;
 
+bool same_signing(const std::shared_ptr<Signing>& a, const std::shared_ptr<Signing>& b) {
+  if (!a || !b) return !a && !b;
+  return a->mode() == b->mode() && a->link_id() == b->link_id() && a->key() == b->key();
+}
+
+bool same_options(const LinkOptions& a, const LinkOptions& b) {
+  return a.autopilot_system_id == b.autopilot_system_id && a.pin_peer == b.pin_peer &&
+         a.heartbeat_timeout_s == b.heartbeat_timeout_s && same_signing(a.signing, b.signing);
+}
+
 }  // namespace
 
 std::shared_ptr<Link> Link::open(const std::string& url, const LinkOptions& options) {
   static std::mutex mutex;
   static std::map<std::string, std::weak_ptr<Link>> links;
   std::lock_guard lock(mutex);
-  if (auto existing = links[url].lock()) return existing;
+  if (auto existing = links[url].lock()) {
+    if (!same_options(existing->options_, options))
+      throw Error(url + ": this link is open already with other options (autopilot_system_id, pin_peer, "
+                        "heartbeat_timeout_s, signing, signing_key_file, signing_link_id): every node of one link must "
+                        "give the same");
+    return existing;
+  }
   auto link = std::make_shared<Link>(open_transport(parse_connection_url(url)), options);
   links[url] = link;
   return link;
 }
 
 Link::Link(std::unique_ptr<Transport> transport, const LinkOptions& options)
-    : transport_(std::move(transport)), options_(options) {
+    : transport_(std::move(transport)),
+      options_(options),
+      writer_({options.autopilot_system_id, mav::comp_onboard_computer}, options.signing) {
+  view_.signing = options_.signing ? options_.signing->mode() : SigningMode::off;
   transport_->set_pinning(options_.pin_peer);
   reader_ = std::thread([this] { read_loop(); });
 }
@@ -49,8 +68,10 @@ void Link::read_loop() {
     const auto frames = parser.feed(std::span(buffer.data(), n));
     std::lock_guard lock(mutex_);
     autopilot_heard_ = false;
-    for (const Frame& f : frames) take(f);
+    for (const Frame& f : frames)
+      if (!options_.signing || options_.signing->admit(f)) take(f);  // dropped frames pin nobody
     view_.parser = parser.counts();
+    if (options_.signing) view_.signatures = options_.signing->counts();
     keep_the_peer(LinkClock::now());
   }
 }

@@ -16,6 +16,7 @@
 #include "kestrel/mavlink/frame.hpp"
 #include "kestrel/mavlink/frame_parser.hpp"
 #include "kestrel/mavlink/messages.hpp"
+#include "kestrel/mavlink/signing.hpp"
 #include "kestrel/mavlink/transport.hpp"
 
 namespace kestrel::mavlink {
@@ -45,6 +46,8 @@ struct VehicleView {
   std::uint64_t pins = 0;                 ///< times a peer was pinned (again after a silence)
   std::uint64_t foreign_datagrams = 0;    ///< dropped: from another address than the pinned peer
   std::uint64_t other_system_frames = 0;  ///< ignored: from another MAVLink system than the autopilot's
+  SigningMode signing = SigningMode::off;
+  SigningCounts signatures;  ///< frames judged by their signature (all zero when signing is off)
 };
 
 /// Whom the link listens to.
@@ -54,12 +57,16 @@ struct LinkOptions {
   /// while its heartbeats keep coming (udpout and serial are pinned by construction).
   bool pin_peer = true;
   double heartbeat_timeout_s = 1.5;  ///< a pinned peer silent this long is let go
+  /// MAVLink 2 signing: frames out signed, frames in judged (nullptr: off). Under `require` a
+  /// peer is pinned only by a correctly signed heartbeat.
+  std::shared_ptr<Signing> signing;
 };
 
 class Link {
  public:
-  /// The process's link for `url`, opened on first use (with the options of that first use).
-  /// Throws kestrel::Error (the URL, the cause).
+  /// The process's link for `url`, opened on first use. Every later user must ask for the same
+  /// options: a second node of the link that signs differently, or pins another system, is an
+  /// Error rather than a silent first-one-wins. Throws kestrel::Error (the URL, the cause).
   static std::shared_ptr<Link> open(const std::string& url, const LinkOptions& options = {});
   /// A link over a transport of the caller's (tests).
   explicit Link(std::unique_ptr<Transport> transport, const LinkOptions& options = {});
@@ -76,8 +83,7 @@ class Link {
   template <class M>
   bool send(const M& message) {
     std::lock_guard lock(send_mutex_);
-    return send_frame(
-        encode_v2(M::definition(), &message, {options_.autopilot_system_id, mav::comp_onboard_computer}, sequence_++));
+    return send_frame(writer_.encode(message));
   }
   std::string describe() const;
   /// Why the reader stopped (the device went away), if it did.
@@ -98,7 +104,7 @@ class Link {
   std::deque<StatusText> texts_;
   std::optional<std::string> failure_;
   std::mutex send_mutex_;  // taken before mutex_, never after
-  std::uint8_t sequence_ = 0;
+  FrameWriter writer_;     // guarded by send_mutex_
   std::atomic<bool> failed_{false};
   std::atomic<bool> stop_{false};
   std::thread reader_;

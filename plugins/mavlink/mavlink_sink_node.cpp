@@ -50,6 +50,7 @@ struct MavlinkSinkConfig {
   double command_timeout_s = 0.5;
   double heartbeat_timeout_s = 1.5;
   PeerConfig peer;
+  SigningConfig signing;
   double connect_timeout_s = 10.0;
   double ack_timeout_s = 1.0;
   std::int64_t retries = 3;
@@ -99,7 +100,7 @@ class MavlinkSink final : public Node {
         .with_unit("s")
         .range(0.1, 60.0)
         .describe("the autopilot is lost when its last heartbeat is older: commanding stops");
-    declare_peer(c, &C::peer);
+    declare_peer(c, &C::peer, &C::signing);
     c.param("connect_timeout_s", &C::connect_timeout_s)
         .with_unit("s")
         .range(0.1, 600.0)
@@ -135,7 +136,7 @@ class MavlinkSink final : public Node {
       : cfg_(init.config<MavlinkSinkConfig>()),
         guard_(GuardLimits{cfg_.fence_min_m, cfg_.fence_max_m, cfg_.max_speed_m_s, cfg_.max_tilt_deg}),
         session_(SessionOptions{cfg_.prestream_s, cfg_.arm, cfg_.ack_timeout_s, static_cast<int>(cfg_.retries)}) {
-    link_ = Link::open(cfg_.connection, link_options(cfg_.peer, cfg_.heartbeat_timeout_s));
+    link_ = Link::open(cfg_.connection, link_options(cfg_.peer, cfg_.signing, cfg_.heartbeat_timeout_s));
     init.set_rate(cfg_.rate_hz);
   }
 
@@ -198,13 +199,12 @@ class MavlinkSink final : public Node {
     const CommandCounts& k = session_.command_counts();
     const double streamed_s = streaming_since_s_ ? last_sent_s_ - *streaming_since_s_ : 0.0;
     const double rate = streamed_s > 0 ? static_cast<double>(setpoints_ - 1) / streamed_s : 0.0;
+    ReportSection section;
+    report_link_guard(section, link_->view());
     ctx.set_report_section(
         ctx.id(),
-        ReportSection()
+        section
             .info("connection", cfg_.connection)
-            .metric("foreign_datagrams", link_->view().foreign_datagrams, "", Better::lower)
-            .metric("other_system_frames", link_->view().other_system_frames, "frames", Better::lower)
-            .quantity("peer_pins", link_->view().pins)
             .info("phase", session_.phase_name())
             .info("refusal", session_.refusal())
             .quantity("setpoints", setpoints_)

@@ -22,6 +22,7 @@ struct MavlinkSourceConfig {
   double status_rate_hz = 5.0;
   double heartbeat_timeout_s = 1.5;
   PeerConfig peer;
+  SigningConfig signing;
 };
 
 class MavlinkSource final : public Node {
@@ -50,7 +51,7 @@ class MavlinkSource final : public Node {
         .with_unit("s")
         .range(0.1, 60.0)
         .describe("the link is down when the autopilot's last heartbeat is older");
-    declare_peer(c, &C::peer);
+    declare_peer(c, &C::peer, &C::signing);
     return NodeSpec("mavlink_source", "The vehicle's state and status from its autopilot over MAVLink")
         .details(
             "Publishes a VehicleState for each new position or odometry message, converted from NED/FRD to kestrel's "
@@ -63,7 +64,7 @@ class MavlinkSource final : public Node {
   }
 
   explicit MavlinkSource(NodeInit& init) : cfg_(init.config<MavlinkSourceConfig>()) {
-    link_ = Link::open(cfg_.connection, link_options(cfg_.peer, cfg_.heartbeat_timeout_s));
+    link_ = Link::open(cfg_.connection, link_options(cfg_.peer, cfg_.signing, cfg_.heartbeat_timeout_s));
     init.set_rate(cfg_.rate_hz);
   }
 
@@ -87,13 +88,12 @@ class MavlinkSource final : public Node {
 
   void finish(Context& ctx) override {
     const auto& p = last_view_.parser;
+    ReportSection section;
+    report_link_guard(section, link_->view());
     ctx.set_report_section(
         ctx.id(),
-        ReportSection()
+        section
             .info("connection", cfg_.connection)
-            .metric("foreign_datagrams", link_->view().foreign_datagrams, "", Better::lower)
-            .metric("other_system_frames", link_->view().other_system_frames, "frames", Better::lower)
-            .quantity("peer_pins", link_->view().pins)
             .quantity("frames", p.frames)
             .metric("bad_checksum", p.bad_checksum, "frames", Better::lower)
             .metric("unknown_id", p.unknown_id, "frames", Better::lower)

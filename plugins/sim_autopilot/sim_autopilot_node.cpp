@@ -21,6 +21,7 @@
 #include "kestrel/mavlink/connection_param.hpp"
 #include "kestrel/mavlink/connection_url.hpp"
 #include "kestrel/mavlink/frame_parser.hpp"
+#include "kestrel/mavlink/signing_param.hpp"
 #include "kestrel/mavlink/transport.hpp"
 #include "offboard_rules.hpp"
 
@@ -30,6 +31,7 @@ namespace mav = mavlink::mav;
 
 struct SimAutopilotConfig {
   std::string connection = "udpout://127.0.0.1:14540";
+  mavlink::SigningConfig signing;
   double rate_hz = 100.0;
   double telemetry_hz = 50.0;
   double control_hz = 500.0;
@@ -56,6 +58,7 @@ class SimAutopilot final : public Node {
     ConfigSpec<C> c;
     mavlink::declare_connection(
         c, &C::connection, "the link, as PX4 SITL's: udpout://HOST:PORT, udpin://HOST:PORT or serial:///dev/PORT:BAUD");
+    mavlink::declare_signing(c, &C::signing);
     c.param("rate_hz", &C::rate_hz).with_unit("Hz").range(20.0, 2000.0).describe("link polling and `state` rate");
     c.param("telemetry_hz", &C::telemetry_hz)
         .with_unit("Hz")
@@ -127,7 +130,8 @@ class SimAutopilot final : public Node {
             "SET_ATTITUDE_TARGET, thrust 0..1 of the rotors' top thrust). It follows PX4's offboard rules: offboard "
             "only with a setpoint stream, hold when the stream stops for offboard_loss_timeout_s, no disarming in the "
             "air. Sends HEARTBEAT (1 Hz), LOCAL_POSITION_NED and ATTITUDE_QUATERNION (telemetry_hz), "
-            "EXTENDED_SYS_STATE, STATUSTEXT and COMMAND_ACK. The launcher's servo or relay output publishes `fire`.")
+            "EXTENDED_SYS_STATE, STATUSTEXT and COMMAND_ACK. The launcher's servo or relay output publishes `fire`. "
+            "With `signing` it signs what it sends and judges what it receives as PX4 and ArduPilot do.")
         .needs_executor(ExecutorNeed::realtime, "it talks over a real link")
         .output(kState, "true state at rate_hz (for a camera or net riding on the vehicle)")
         .output(kFire, "a fire order when the launcher's output is set")
@@ -172,9 +176,11 @@ class SimAutopilot final : public Node {
         k.setpoints > 1 && last_setpoint_s_ > first_setpoint_s_
             ? nlohmann::json(static_cast<double>(k.setpoints - 1) / (last_setpoint_s_ - first_setpoint_s_))
             : nlohmann::json(nullptr);
+    ReportSection section;
+    mavlink::report_signing(section, cfg_.signing.mode, signing_ ? signing_->counts() : mavlink::SigningCounts{});
     vehicle::report_flight(
         ctx, flight_,
-        ReportSection()
+        section
             .info("connection", cfg_.connection)
             .info("mode", OffboardRules::mode_name(rules_.mode()))
             .info("armed", rules_.armed())
@@ -206,7 +212,8 @@ class SimAutopilot final : public Node {
         flight_(cfg.vehicle.multirotor(), cfg.sim, init.seed()),
         control_(flight_.vehicle(), cfg.gains, cfg.sim.gravity_m_s2, flight_.max_thrust_n()),
         rules_(OffboardRulesOptions{cfg.offboard_loss_timeout_s, cfg.min_setpoint_rate_hz}),
-        writer_({1, mav::comp_autopilot1}) {
+        signing_(mavlink::make_signing(cfg.signing)),
+        writer_({1, mav::comp_autopilot1}, signing_) {
     const auto rotors = static_cast<Eigen::Index>(flight_.vehicle().rotors.size());
     stopped_ = Eigen::VectorXd::Zero(rotors);
     idle_ = Eigen::VectorXd::Constant(rotors, cfg.idle_speed_fraction * flight_.vehicle().max_rotor_speed_rad_s);
@@ -229,7 +236,8 @@ class SimAutopilot final : public Node {
     for (int datagrams = 0; datagrams < 1000; ++datagrams) {
       const std::size_t n = transport_->receive(buffer_, std::chrono::milliseconds(0));
       if (n == 0) return;
-      for (const mavlink::Frame& frame : parser_.feed(std::span(buffer_.data(), n))) take(ctx, frame, now);
+      for (const mavlink::Frame& frame : parser_.feed(std::span(buffer_.data(), n)))
+        if (!signing_ || signing_->admit(frame)) take(ctx, frame, now);
     }
   }
 
@@ -344,6 +352,7 @@ class SimAutopilot final : public Node {
   vehicle::SimulatedMultirotor flight_;
   FlightControl control_;
   OffboardRules rules_;
+  std::shared_ptr<mavlink::Signing> signing_;  // nullptr: signing off
   mavlink::FrameWriter writer_;
   mavlink::FrameParser parser_;
   std::unique_ptr<mavlink::Transport> transport_;

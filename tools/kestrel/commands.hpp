@@ -123,4 +123,16 @@ struct MavlinkListenArgs {
 /// `kestrel mavlink listen`: decoded messages, one line each, and their rates.
 int mavlink_listen_command(const MavlinkListenArgs& args);
 
+/// `kestrel mavlink keygen FILE`: a new signing key, readable by its owner only.
+int mavlink_keygen_command(const std::string& file);
+
+struct MavlinkSetupSigningArgs {
+  std::string connection;  // the autopilot's link, as for listen
+  std::string key_file;    // the key to hand over (kestrel mavlink keygen)
+  double timeout_s = 10.0;  // how long to wait for the autopilot's heartbeat, then for its signed frames
+};
+/// `kestrel mavlink setup-signing URL --key FILE`: SETUP_SIGNING to the autopilot, then a check
+/// that its frames come signed with that key.
+int mavlink_setup_signing_command(const MavlinkSetupSigningArgs& args);
+
 }  // namespace kestrel::cli

@@ -162,6 +162,23 @@ int main(int argc, char** argv) {
   mavlink_listen_cmd->add_flag("--heartbeat", mavlink_listen.heartbeat,
                                "send a ground station's heartbeat at 1 Hz (some autopilots stream only then)");
 
+  std::string keygen_file;
+  auto* mavlink_keygen_cmd = mavlink_cmd->add_subcommand(
+      "keygen", "Write a new MAVLink 2 signing key (64 hexadecimal characters, readable by its owner only)");
+  mavlink_keygen_cmd->add_option("file", keygen_file, "where to write it (never overwritten)")->required();
+  MavlinkSetupSigningArgs setup_signing;
+  auto* mavlink_setup_signing_cmd = mavlink_cmd->add_subcommand(
+      "setup-signing", "Send an autopilot its signing key (SETUP_SIGNING), then check that it signs with it");
+  mavlink_setup_signing_cmd
+      ->add_option("connection", setup_signing.connection,
+                   "the autopilot's link, over a channel you trust (USB): serial:///dev/ttyACM0:115200, udpin://...")
+      ->required();
+  mavlink_setup_signing_cmd->add_option("--key", setup_signing.key_file, "the key file (kestrel mavlink keygen)")
+      ->required();
+  mavlink_setup_signing_cmd->add_option("--timeout", setup_signing.timeout_s,
+                                        "seconds to wait for the autopilot's heartbeat, then for its signed frames "
+                                        "(default 10)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -185,5 +202,7 @@ int main(int argc, char** argv) {
   if (*devices_cmd) return devices_command();
   if (*calibrate_cmd) return calibrate_command(calibrate);
   if (*mavlink_listen_cmd) return mavlink_listen_command(mavlink_listen);
+  if (*mavlink_keygen_cmd) return mavlink_keygen_command(keygen_file);
+  if (*mavlink_setup_signing_cmd) return mavlink_setup_signing_command(setup_signing);
   return kUsage;
 }

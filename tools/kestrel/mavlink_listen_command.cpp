@@ -79,11 +79,7 @@ int mavlink_listen_command(const MavlinkListenArgs& args) {
     while (!g_listen_stop && (!args.duration_s || elapsed() < *args.duration_s) &&
            (!args.count || printed < *args.count)) {
       if (args.heartbeat && std::chrono::steady_clock::now() >= next_heartbeat) {
-        mavlink::Heartbeat hb;
-        hb.type = mavlink::mav::type_gcs;
-        hb.autopilot = mavlink::mav::autopilot_invalid;
-        hb.system_status = mavlink::mav::state_active;
-        link->send(ground_station.encode(hb));
+        link->send(ground_station.encode(mavlink::ground_station_heartbeat()));
         next_heartbeat += std::chrono::seconds(1);
       }
       const std::size_t n = link->receive(buffer, std::chrono::milliseconds(100));

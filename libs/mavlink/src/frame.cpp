@@ -6,6 +6,7 @@
 #include <string>
 
 #include "kestrel/mavlink/crc16.hpp"
+#include "kestrel/mavlink/signing.hpp"
 
 namespace kestrel::mavlink {
 
@@ -34,14 +35,14 @@ std::vector<std::uint8_t> assemble(const std::array<std::uint8_t, N>& header, st
 }  // namespace
 
 std::vector<std::uint8_t> encode_v2(const MessageDefinition& definition, const void* message, Sender from,
-                                    std::uint8_t sequence) {
+                                    std::uint8_t sequence, std::uint8_t incompat_flags) {
   const std::vector<std::uint8_t> payload = definition.write(message);
   std::size_t length = payload.size();
   while (length > 1 && payload[length - 1] == 0) --length;
   const std::uint32_t id = definition.id();
   const std::array<std::uint8_t, header_v2> header = {magic_v2,
                                                       static_cast<std::uint8_t>(length),
-                                                      0,
+                                                      incompat_flags,
                                                       0,
                                                       sequence,
                                                       from.system_id,
@@ -67,6 +68,11 @@ std::vector<std::uint8_t> encode_v1(const MessageDefinition& definition, const v
   std::vector<std::uint8_t> frame = assemble(header, std::span(payload).first(length));
   append_checksum(frame, definition.crc_extra());
   return frame;
+}
+
+std::vector<std::uint8_t> FrameWriter::encode(const MessageDefinition& definition, const void* message) {
+  if (signing_) return signing_->encode(definition, message, from_, sequence_++);
+  return encode_v2(definition, message, from_, sequence_++);
 }
 
 }  // namespace kestrel::mavlink

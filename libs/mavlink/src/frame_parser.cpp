@@ -1,5 +1,7 @@
 #include "kestrel/mavlink/frame_parser.hpp"
 
+#include <algorithm>
+
 #include "kestrel/mavlink/messages.hpp"
 
 namespace kestrel::mavlink {
@@ -114,7 +116,10 @@ std::vector<Frame> FrameParser::feed(std::span<const std::uint8_t> bytes) {
     f.system_id = data[at + (v2 ? 5 : 3)];
     f.component_id = data[at + (v2 ? 6 : 4)];
     f.message_id = p.id;
-    f.payload.assign(data + at + p.header, data + at + p.header + data[at + 1]);
+    const std::size_t payload_end = at + p.header + data[at + 1];
+    f.payload.assign(data + at + p.header, data + payload_end);
+    f.checksum = static_cast<std::uint16_t>(data[payload_end] | (data[payload_end + 1] << 8));
+    if (f.is_signed()) std::copy(data + payload_end + checksum_size, data + at + p.total, f.signature.begin());
     ++counts_.frames;
     if (!v2) ++counts_.v1_frames;
     if (f.is_signed()) ++counts_.signed_frames;

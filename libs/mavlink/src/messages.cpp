@@ -148,6 +148,16 @@ void StatusText::set_text(const std::string& s) {
   std::memcpy(text.data(), s.data(), std::min(s.size(), text.size()));
 }
 
+const MessageDefinition& SetupSigning::definition() {
+  using M = SetupSigning;
+  static const MessageDefinition d(256, "SETUP_SIGNING",
+                                   {field<&M::target_system>("target_system"),
+                                    field<&M::target_component>("target_component"),
+                                    field<&M::secret_key>("secret_key"),
+                                    field<&M::initial_timestamp>("initial_timestamp")});
+  return d;
+}
+
 const MessageDefinition& Odometry::definition() {
   using M = Odometry;
   static const MessageDefinition d(
@@ -159,6 +169,14 @@ const MessageDefinition& Odometry::definition() {
        field<&M::velocity_covariance>("velocity_covariance"), field<&M::reset_counter>("reset_counter", ext),
        field<&M::estimator_type>("estimator_type", ext), field<&M::quality>("quality", ext)});
   return d;
+}
+
+Heartbeat ground_station_heartbeat() {
+  Heartbeat hb;
+  hb.type = mav::type_gcs;
+  hb.autopilot = mav::autopilot_invalid;
+  hb.system_status = mav::state_active;
+  return hb;
 }
 
 const std::vector<const MessageDefinition*>& known_definitions() {
@@ -174,6 +192,7 @@ const std::vector<const MessageDefinition*>& known_definitions() {
                                                             &PositionTargetLocalNed::definition(),
                                                             &ExtendedSysState::definition(),
                                                             &StatusText::definition(),
+                                                            &SetupSigning::definition(),
                                                             &Odometry::definition()};
   return all;
 }

@@ -16,7 +16,7 @@ namespace kestrel::mavlink {
 struct ParserCounts {
   std::uint64_t frames = 0;         ///< good frames delivered
   std::uint64_t v1_frames = 0;      ///< of which MAVLink 1
-  std::uint64_t signed_frames = 0;  ///< of which signed (their signature is not verified)
+  std::uint64_t signed_frames = 0;  ///< of which signed (checked by signing.hpp, not here)
   std::uint64_t bad_checksum = 0;   ///< a known id whose checksum did not match
   std::uint64_t unknown_id = 0;     ///< well-formed frames of an id kestrel does not know
   std::uint64_t bad_flags = 0;      ///< incompatibility flags kestrel does not understand

@@ -134,6 +134,14 @@ struct StatusText {             // 253
   void set_text(const std::string& s);
 };
 
+struct SetupSigning {  // 256: MAVLink 2 only; sent only over a link the user trusts
+  std::uint8_t target_system = 0;
+  std::uint8_t target_component = 0;
+  std::array<std::uint8_t, 32> secret_key{};
+  std::uint64_t initial_timestamp = 0;  ///< 10 us units since 2015-01-01 UTC (signing.hpp)
+  static const MessageDefinition& definition();
+};
+
 struct Odometry {  // 331: MAVLink 2 only
   std::uint64_t time_usec = 0;
   std::uint8_t frame_id = 1;         ///< MAV_FRAME of the pose
@@ -149,6 +157,9 @@ struct Odometry {  // 331: MAVLink 2 only
   std::int8_t quality = 0;
   static const MessageDefinition& definition();
 };
+
+/// The heartbeat of a ground station (MAV_TYPE_GCS, no autopilot), as a tool on the ground sends it.
+Heartbeat ground_station_heartbeat();
 
 /// Every message above, by id; nullptr for one kestrel does not know.
 const MessageDefinition* find_definition(std::uint32_t id);
