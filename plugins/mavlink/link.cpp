@@ -44,6 +44,9 @@ Link::Link(std::unique_ptr<Transport> transport, const LinkOptions& options)
       writer_({options.autopilot_system_id, mav::comp_onboard_computer}, options.signing) {
   view_.signing = options_.signing ? options_.signing->mode() : SigningMode::off;
   transport_->set_pinning(options_.pin_peer);
+  // A signing link judges what an address it does not answer sends too, for its counters: the
+  // report then says what an intruder on the network tried (unsigned, badly signed, replayed).
+  transport_->set_foreign_delivery(options_.signing != nullptr);
   reader_ = std::thread([this] { read_loop(); });
 }
 
@@ -53,7 +56,7 @@ Link::~Link() {
 }
 
 void Link::read_loop() {
-  FrameParser parser;
+  FrameParser parser, foreign_parser;  // apart: a foreign sender's bytes never join the peer's stream
   std::vector<std::uint8_t> buffer(4096);
   while (!stop_) {
     std::size_t n = 0;
@@ -64,6 +67,13 @@ void Link::read_loop() {
       failure_ = e.what();
       failed_ = true;
       return;
+    }
+    if (transport_->last_was_foreign()) {
+      for (const Frame& f : foreign_parser.feed(std::span(buffer.data(), n))) options_.signing->admit(f);
+      std::lock_guard lock(mutex_);
+      view_.signatures = options_.signing->counts();
+      view_.foreign_datagrams = transport_->foreign_datagrams();
+      continue;
     }
     const auto frames = parser.feed(std::span(buffer.data(), n));
     std::lock_guard lock(mutex_);

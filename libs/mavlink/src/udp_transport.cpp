@@ -95,8 +95,10 @@ std::size_t UdpTransport::receive(std::span<std::uint8_t> buffer, std::chrono::m
     }
     if (url_.kind == ConnectionUrl::Kind::udp_in) {
       std::lock_guard lock(peer_mutex_);
-      if (pinned_ && !same_address(from, peer_)) {
-        ++foreign_;  // not the pinned autopilot: dropped, never answered
+      last_foreign_ = pinned_ && !same_address(from, peer_);
+      if (last_foreign_) {
+        ++foreign_;  // not the pinned autopilot: never answered, and dropped unless asked for
+        if (deliver_foreign_) return static_cast<std::size_t>(n);
         continue;
       }
       last_from_ = from;
@@ -137,6 +139,16 @@ void UdpTransport::unpin() {
   std::lock_guard lock(peer_mutex_);
   pinned_ = false;
   if (pinning_) have_peer_ = false;
+}
+
+void UdpTransport::set_foreign_delivery(bool on) {
+  std::lock_guard lock(peer_mutex_);
+  deliver_foreign_ = on;
+}
+
+bool UdpTransport::last_was_foreign() const {
+  std::lock_guard lock(peer_mutex_);
+  return last_foreign_;
 }
 
 std::uint16_t UdpTransport::local_port() const {

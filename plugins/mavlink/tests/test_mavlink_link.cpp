@@ -4,9 +4,12 @@
 #include <unistd.h>
 
 #include <array>
+#include <kestrel/error.hpp>
 #include <thread>
 
 #include "kestrel/mavlink/connection_url.hpp"
+#include "kestrel/mavlink/frame_parser.hpp"
+#include "kestrel/mavlink/signing.hpp"
 #include "kestrel/mavlink/udp_transport.hpp"
 #include "kestrel/testing/udp_ports.hpp"
 #include "link.hpp"
@@ -144,11 +147,83 @@ TEST(MavlinkLink, FramesOfOtherSystemsAreIgnoredAndCounted) {
   EXPECT_FALSE(link.view().peer_pinned);
 }
 
+// With signing required, the spoofed heartbeat of the attack cannot even pin the link: the
+// impostor, first to speak, is dropped as unsigned; one with the wrong key is dropped as badly
+// signed; the autopilot's signed heartbeat pins it; a frame the autopilot sent earlier, sent
+// again from its own address, is refused as a replay. What the link sends is signed with the key.
+TEST(MavlinkLink, RequiredSigningPinsOnlyASignerAndRefusesReplays) {
+  SigningKey key{};
+  key.fill(0x5A);
+  SigningKey wrong_key = key;
+  wrong_key[7] = 0;
+  LinkOptions options;
+  options.signing = std::make_shared<Signing>(SigningMode::require, key, 0);
+  auto [owned, port] = listening_link(options);
+  Link& link = *owned;
+  const std::string url = "udpout://127.0.0.1:" + std::to_string(port);
+  UdpTransport autopilot(parse_connection_url(url)), impostor(parse_connection_url(url));
+  FrameWriter signed_autopilot({1, mav::comp_autopilot1}, std::make_shared<Signing>(SigningMode::require, key, 0));
+  FrameWriter unsigned_impostor({1, mav::comp_autopilot1});
+  FrameWriter wrong_key_impostor({1, mav::comp_autopilot1},
+                                 std::make_shared<Signing>(SigningMode::require, wrong_key, 0));
+  Heartbeat hb;
+  hb.autopilot = mav::autopilot_px4;
+  hb.type = mav::type_quadrotor;
+  std::array<std::uint8_t, 512> buffer{};
+
+  impostor.send(unsigned_impostor.encode(hb));
+  impostor.send(wrong_key_impostor.encode(hb));
+  ASSERT_TRUE(eventually([&] {
+    const SigningCounts c = link.view().signatures;
+    return c.unsigned_frames == 1 && c.bad_signature == 1;
+  }));
+  EXPECT_FALSE(link.view().peer_pinned) << "no frame that fails its signature pins the link";
+  EXPECT_EQ(link.view().heartbeat_count, 0u);
+  EXPECT_FALSE(link.send(Heartbeat{}));
+
+  const std::vector<std::uint8_t> captured = signed_autopilot.encode(hb);
+  autopilot.send(captured);
+  ASSERT_TRUE(eventually([&] { return link.view().peer_pinned && link.view().heartbeat_count == 1; }));
+  autopilot.send(signed_autopilot.encode(hb));
+  ASSERT_TRUE(eventually([&] { return link.view().heartbeat_count == 2; }));
+  autopilot.send(captured);
+  ASSERT_TRUE(eventually([&] { return link.view().signatures.replayed == 1; }));
+  EXPECT_EQ(link.view().heartbeat_count, 2u) << "the replayed heartbeat is not taken";
+  EXPECT_EQ(link.view().signatures.signed_frames, 2u);
+  // From another address once the link is pinned: dropped as foreign, and still judged, so that
+  // the report says what was tried.
+  impostor.send(captured);
+  impostor.send(unsigned_impostor.encode(hb));
+  ASSERT_TRUE(eventually([&] {
+    const VehicleView v = link.view();
+    return v.foreign_datagrams == 2 && v.signatures.replayed == 2 && v.signatures.unsigned_frames == 2;
+  }));
+  EXPECT_EQ(link.view().heartbeat_count, 2u);
+  EXPECT_EQ(link.view().signing, SigningMode::require);
+
+  ASSERT_TRUE(link.send(CommandLong{}));
+  const std::size_t n = autopilot.receive(buffer, 1000ms);
+  FrameParser parser;
+  const auto frames = parser.feed(std::span(buffer.data(), n));
+  ASSERT_EQ(frames.size(), 1u);
+  EXPECT_TRUE(frames[0].is_signed());
+  EXPECT_TRUE(signature_matches(frames[0], key));
+  EXPECT_FALSE(signature_matches(frames[0], wrong_key));
+}
+
 TEST(MavlinkLink, OneUrlIsOneLinkInTheProcess) {
   auto first = Link::open("udpin://127.0.0.1:14987");
   auto second = Link::open("udpin://127.0.0.1:14987");
   EXPECT_EQ(first.get(), second.get());
   EXPECT_THAT(first->describe(), ::testing::HasSubstr("14987"));
+  // A second node of the link that asks for other options is told so, not silently overruled.
+  LinkOptions signed_options;
+  signed_options.signing = std::make_shared<Signing>(SigningMode::require, SigningKey{}, 0);
+  EXPECT_THAT([&] { Link::open("udpin://127.0.0.1:14987", signed_options); },
+              ::testing::ThrowsMessage<kestrel::Error>(::testing::HasSubstr("every node of one link")));
+  LinkOptions other_system;
+  other_system.autopilot_system_id = 2;
+  EXPECT_THROW(Link::open("udpin://127.0.0.1:14987", other_system), kestrel::Error);
 }
 
 TEST(MavlinkLink, AVanishedDeviceIsReportedAndNothingIsSentAfter) {

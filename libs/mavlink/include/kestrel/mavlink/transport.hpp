@@ -36,6 +36,11 @@ class Transport {
   virtual void unpin() {}
   /// Datagrams dropped because they came from another address than the pinned peer.
   virtual std::uint64_t foreign_datagrams() const { return 0; }
+  /// Hands foreign datagrams up (still counted, never answered) instead of dropping them, so that
+  /// a signing link can judge them for its counters; last_was_foreign() tells them apart.
+  virtual void set_foreign_delivery(bool /*on*/) {}
+  /// Whether the datagram receive() returned last came from another address than the pinned peer.
+  virtual bool last_was_foreign() const { return false; }
 };
 
 /// Opens the transport a URL names. Throws kestrel::Error naming the URL and the cause.

@@ -27,6 +27,8 @@ class UdpTransport : public Transport {
   void pin_sender() override;
   void unpin() override;
   std::uint64_t foreign_datagrams() const override { return foreign_; }
+  void set_foreign_delivery(bool on) override;
+  bool last_was_foreign() const override;
   /// The local port bound (useful when the URL asked for an ephemeral one).
   std::uint16_t local_port() const;
 
@@ -37,6 +39,7 @@ class UdpTransport : public Transport {
   bool have_peer_ = false;
   sockaddr_in peer_{};
   bool pinning_ = false, pinned_ = false;
+  bool deliver_foreign_ = false, last_foreign_ = false;
   sockaddr_in last_from_{};  // the sender of the datagram receive() returned last
   std::atomic<std::uint64_t> foreign_{0};
 };
