@@ -68,7 +68,7 @@ void Link::read_loop() {
       failed_ = true;
       return;
     }
-    if (transport_->last_was_foreign()) {
+    if (n > 0 && options_.signing && transport_->last_was_foreign()) {
       for (const Frame& f : foreign_parser.feed(std::span(buffer.data(), n))) options_.signing->admit(f);
       std::lock_guard lock(mutex_);
       view_.signatures = options_.signing->counts();

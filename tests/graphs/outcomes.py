@@ -12,6 +12,8 @@ needs an entry: a new graph without one fails its test.
                                           --set lines ("live KEY FILE", "replay KEY FILE")
   outcomes.py hardware GRAPH              for a graph that needs a device: what its run must say
                                           without one (or nothing)
+  outcomes.py signing GRAPH               for a graph that signs its MAVLink link: the nodes given
+                                          a new key file (signing_key_file) for the run
 
 In the checks, `d` is the report's "detection" section, `t` its "tracking" section, `s` the run
 length in seconds and `frames` the camera frames in it (30 FPS).
@@ -72,6 +74,10 @@ NEEDS_HARDWARE = {"ocams_detection": "no oCamS found",
                   # tests/integration/test_field_intercept.cpp runs it with a simulated camera:
                   # then it says "no heartbeat from the autopilot"
                   "field_intercept": "no oCamS found"}
+
+# Graphs whose MAVLink link is signed: the test writes a fresh key (kestrel mavlink keygen) and
+# gives it to these nodes, as a user does before the first run.
+SIGNED_NODES = {"sitl_intercept_signed": ["link", "telemetry", "hunter"]}
 
 # The oCamS's GRBG filter samples one colour a pixel and demosaicing interpolates the others: at
 # most a pixel of smoothing at the silhouette's edge, 5.0 / 304 = 0.016 m sideways at 5 m, and a
@@ -205,6 +211,17 @@ OUTCOMES = {
         ("r['controller']['faults'] == 0", "the Lee controller beside it (for attitude mode) saw finite inputs"),
     ]),
 }
+# The same interception with every frame signed and checked on both ends: it captures as the
+# unsigned graph does, every frame each end accepted was signed with the key, none was refused.
+OUTCOMES["sitl_intercept_signed"] = (OUTCOMES["sitl_intercept"][0], OUTCOMES["sitl_intercept"][1] + [
+    ("r['link']['signing'] == r['telemetry']['signing'] == r['hunter']['signing'] == 'require'",
+     "signing required on both ends"),
+    ("r['telemetry']['frames'] > 0 and r['link']['signed_frames'] >= r['telemetry']['frames']",
+     "every frame the vehicle sent was signed and accepted"),
+    ("r['hunter']['frames'] > 0 and r['hunter']['signed_frames'] == r['hunter']['frames']",
+     "every frame the link sent was signed and accepted"),
+] + [(f"r['{n}']['{k}'] == 0", "nothing refused on a clean link")
+     for n in ("link", "telemetry", "hunter") for k in ("unsigned_frames", "bad_signature", "replayed_frames")])
 
 
 def main(argv):
@@ -219,6 +236,10 @@ def main(argv):
             print(graph)
             for which, key, file in sets:
                 print(which, key, file)
+        return 0
+    if len(argv) == 3 and argv[1] == "signing":
+        for node in SIGNED_NODES.get(argv[2], []):
+            print(node)
         return 0
     if len(argv) == 3 and argv[1] == "hardware":
         print(NEEDS_HARDWARE.get(argv[2], ""))

@@ -36,7 +36,13 @@ if [ -n "${recorded:-}" ]; then
     --report "$out/live" --no-progress "${live_sets[@]}"
   live=("$out/live/report.json")
 fi
-"$cli" validate "$graph" "${replay[@]}"
-"$cli" run "$graph" --duration "$duration" --report "$out" --no-progress --stats "${replay[@]}"
+# A graph whose MAVLink link is signed gets a fresh key, as a user writes one before the first run.
+signing=()
+for node in $(python3 "$here/outcomes.py" signing "$name"); do
+  [ -f "$out/signing.key" ] || { mkdir -p "$out"; "$cli" mavlink keygen "$out/signing.key"; }
+  signing+=(--set "$node.signing_key_file=$out/signing.key")
+done
+"$cli" validate "$graph" "${replay[@]}" "${signing[@]}"
+"$cli" run "$graph" --duration "$duration" --report "$out" --no-progress --stats "${replay[@]}" "${signing[@]}"
 test -s "$out/report.md"
 python3 "$here/outcomes.py" check "$name" "$out/report.json" "$duration" "${live[@]}"

@@ -99,6 +99,7 @@ std::size_t UdpTransport::receive(std::span<std::uint8_t> buffer, std::chrono::m
       if (last_foreign_) {
         ++foreign_;  // not the pinned autopilot: never answered, and dropped unless asked for
         if (deliver_foreign_) return static_cast<std::size_t>(n);
+        last_foreign_ = false;
         continue;
       }
       last_from_ = from;
