@@ -1,7 +1,8 @@
 // Fuzz target: the MAVLink frame parser on bytes from a link. The first byte chooses where the
 // rest is cut into two feeds. Whatever the bytes: no crash and no read out of bounds; the frames
 // are the same however the stream is cut; each frame holds a payload of at most 255 bytes that
-// decodes and prints; and a frame re-encoded from what it decoded to parses back to the same message.
+// decodes and prints; a frame re-encoded from what it decoded to parses back to the same message;
+// judging signatures never fails on any frame, and a frame signed again with a key verifies.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -9,6 +10,7 @@
 #include "kestrel/mavlink/frame_parser.hpp"
 #include "kestrel/mavlink/message_text.hpp"
 #include "kestrel/mavlink/messages.hpp"
+#include "kestrel/mavlink/signing.hpp"
 
 using namespace kestrel::mavlink;
 
@@ -24,6 +26,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (Frame& f : split.feed(stream.subspan(cut))) pieces.push_back(std::move(f));
   if (pieces.size() != frames.size()) __builtin_trap();
 
+  static const SigningKey key = [] {
+    SigningKey k{};
+    k.fill(0x42);
+    return k;
+  }();
+  Signing require(SigningMode::require, key, 0, [] { return SigningTimestamp{1'000'000'000}; });
+  for (const Frame& f : frames) (void)require.admit(f);  // whatever the bytes, a verdict
+  const SigningCounts judged = require.counts();
+  if (judged.signed_frames + judged.unsigned_frames + judged.bad_signature + judged.replayed != frames.size())
+    __builtin_trap();
+
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const Frame& f = frames[i];
     if (f.payload != pieces[i].payload || f.message_id != pieces[i].message_id) __builtin_trap();
@@ -36,6 +49,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       FrameParser again;
       const auto back = again.feed(encode_v2(Heartbeat::definition(), &h, {f.system_id, f.component_id}, f.sequence));
       if (back.size() != 1 || back[0].as<Heartbeat>().custom_mode != h.custom_mode) __builtin_trap();
+      std::vector<std::uint8_t> resigned =
+          encode_v2(Heartbeat::definition(), &h, {f.system_id, f.component_id}, f.sequence, incompat_signed);
+      append_signature(resigned, key, f.link_id(), f.signature_timestamp());
+      const auto verified = again.feed(resigned);
+      if (verified.size() != 1 || !signature_matches(verified[0], key)) __builtin_trap();
     }
   }
   return 0;

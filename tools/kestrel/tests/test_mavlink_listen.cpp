@@ -11,36 +11,18 @@
 #include "kestrel/mavlink/frame.hpp"
 #include "kestrel/mavlink/messages.hpp"
 #include "kestrel/mavlink/udp_transport.hpp"
+#include "kestrel/testing/run_command.hpp"
 #include "kestrel/testing/udp_ports.hpp"
 
 using namespace kestrel::mavlink;
 using namespace std::chrono_literals;
-
-namespace {
-
-struct Output {
-  std::string text;
-  int status = -1;
-};
-
-Output run(const std::string& command) {
-  Output out;
-  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
-  if (!pipe) return out;
-  std::array<char, 4096> chunk;
-  std::size_t n;
-  while ((n = std::fread(chunk.data(), 1, chunk.size(), pipe)) > 0) out.text.append(chunk.data(), n);
-  const int status = ::pclose(pipe);
-  out.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return out;
-}
-
-}  // namespace
+using kestrel::testing::run_command;
+using Output = kestrel::testing::CommandOutput;
 
 TEST(MavlinkListen, PrintsEachMessageOnALineOfItsOwnAndTheRates) {
   const std::uint16_t port = kestrel::testing::free_udp_port();
   auto listener = std::async(std::launch::async, [&] {
-    return run(std::string(KESTREL_CLI) + " mavlink listen udpin://127.0.0.1:" + std::to_string(port) +
+    return run_command(std::string(KESTREL_CLI) + " mavlink listen udpin://127.0.0.1:" + std::to_string(port) +
                " --count 4 --duration 20");
   });
   auto vehicle = UdpTransport(parse_connection_url("udpout://127.0.0.1:" + std::to_string(port)));
@@ -69,17 +51,17 @@ TEST(MavlinkListen, PrintsEachMessageOnALineOfItsOwnAndTheRates) {
 }
 
 TEST(MavlinkListen, SilenceAndBadUrlsSayWhy) {
-  const Output silent = run(std::string(KESTREL_CLI) + " mavlink listen udpin://127.0.0.1:" +
+  const Output silent = run_command(std::string(KESTREL_CLI) + " mavlink listen udpin://127.0.0.1:" +
                             std::to_string(kestrel::testing::free_udp_port()) + " --duration 0.3");
   EXPECT_EQ(silent.status, 1);
   EXPECT_THAT(silent.text, ::testing::HasSubstr("no MAVLink frame received"));
-  const Output bad = run(std::string(KESTREL_CLI) + " mavlink listen tcp://1.2.3.4:5760");
+  const Output bad = run_command(std::string(KESTREL_CLI) + " mavlink listen tcp://1.2.3.4:5760");
   EXPECT_EQ(bad.status, 2);
   EXPECT_THAT(bad.text, ::testing::HasSubstr("unknown scheme 'tcp'"));
-  const Output missing = run(std::string(KESTREL_CLI) + " mavlink listen serial:///dev/ttyKESTREL_NONE:57600");
+  const Output missing = run_command(std::string(KESTREL_CLI) + " mavlink listen serial:///dev/ttyKESTREL_NONE:57600");
   EXPECT_EQ(missing.status, 1);
   EXPECT_THAT(missing.text, ::testing::HasSubstr("/dev/ttyKESTREL_NONE"));
-  const Output help = run(std::string(KESTREL_CLI) + " mavlink --help");
+  const Output help = run_command(std::string(KESTREL_CLI) + " mavlink --help");
   EXPECT_EQ(help.status, 0);
   EXPECT_THAT(help.text, ::testing::HasSubstr("listen"));
 }
