@@ -42,7 +42,8 @@ struct RisingClock {
 void BM_EncodeSetpoint(benchmark::State& state) {
   const SetPositionTargetLocalNed sp = setpoint();
   std::uint8_t sequence = 0;
-  for (auto _ : state) benchmark::DoNotOptimize(encode_v2(SetPositionTargetLocalNed::definition(), &sp, {1, 191}, sequence++));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(encode_v2(SetPositionTargetLocalNed::definition(), &sp, {1, 191}, sequence++));
 }
 BENCHMARK(BM_EncodeSetpoint);
 
@@ -69,7 +70,8 @@ void BM_ParseAndVerifySignedSetpoint(benchmark::State& state) {
   Signing sender(SigningMode::require, key(), 0, RisingClock{});
   std::vector<std::vector<std::uint8_t>> frames;
   for (int i = 0; i < 4096; ++i)
-    frames.push_back(sender.encode(SetPositionTargetLocalNed::definition(), &sp, {1, 191}, static_cast<std::uint8_t>(i)));
+    frames.push_back(
+        sender.encode(SetPositionTargetLocalNed::definition(), &sp, {1, 191}, static_cast<std::uint8_t>(i)));
   FrameParser parser;
   std::size_t i = 0;
   const auto new_receiver = [] {

@@ -28,9 +28,10 @@ std::shared_ptr<Link> Link::open(const std::string& url, const LinkOptions& opti
   std::lock_guard lock(mutex);
   if (auto existing = links[url].lock()) {
     if (!same_options(existing->options_, options))
-      throw Error(url + ": this link is open already with other options (autopilot_system_id, pin_peer, "
-                        "heartbeat_timeout_s, signing, signing_key_file, signing_link_id): every node of one link must "
-                        "give the same");
+      throw Error(url +
+                  ": this link is open already with other options (autopilot_system_id, pin_peer, "
+                  "heartbeat_timeout_s, signing, signing_key_file, signing_link_id): every node of one link must "
+                  "give the same");
     return existing;
   }
   auto link = std::make_shared<Link>(open_transport(parse_connection_url(url)), options);

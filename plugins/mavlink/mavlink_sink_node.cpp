@@ -203,8 +203,7 @@ class MavlinkSink final : public Node {
     report_link_guard(section, link_->view());
     ctx.set_report_section(
         ctx.id(),
-        section
-            .info("connection", cfg_.connection)
+        section.info("connection", cfg_.connection)
             .info("phase", session_.phase_name())
             .info("refusal", session_.refusal())
             .quantity("setpoints", setpoints_)

@@ -92,8 +92,7 @@ class MavlinkSource final : public Node {
     report_link_guard(section, link_->view());
     ctx.set_report_section(
         ctx.id(),
-        section
-            .info("connection", cfg_.connection)
+        section.info("connection", cfg_.connection)
             .quantity("frames", p.frames)
             .metric("bad_checksum", p.bad_checksum, "frames", Better::lower)
             .metric("unknown_id", p.unknown_id, "frames", Better::lower)

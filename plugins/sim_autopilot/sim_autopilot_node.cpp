@@ -180,8 +180,7 @@ class SimAutopilot final : public Node {
     mavlink::report_signing(section, cfg_.signing.mode, signing_ ? signing_->counts() : mavlink::SigningCounts{});
     vehicle::report_flight(
         ctx, flight_,
-        section
-            .info("connection", cfg_.connection)
+        section.info("connection", cfg_.connection)
             .info("mode", OffboardRules::mode_name(rules_.mode()))
             .info("armed", rules_.armed())
             .quantity("hover_thrust", hover_thrust())

@@ -127,8 +127,8 @@ int mavlink_listen_command(const MavlinkListenArgs& args);
 int mavlink_keygen_command(const std::string& file);
 
 struct MavlinkSetupSigningArgs {
-  std::string connection;  // the autopilot's link, as for listen
-  std::string key_file;    // the key to hand over (kestrel mavlink keygen)
+  std::string connection;   // the autopilot's link, as for listen
+  std::string key_file;     // the key to hand over (kestrel mavlink keygen)
   double timeout_s = 10.0;  // how long to wait for the autopilot's heartbeat, then for its signed frames
 };
 /// `kestrel mavlink setup-signing URL --key FILE`: SETUP_SIGNING to the autopilot, then a check

@@ -150,11 +150,10 @@ void StatusText::set_text(const std::string& s) {
 
 const MessageDefinition& SetupSigning::definition() {
   using M = SetupSigning;
-  static const MessageDefinition d(256, "SETUP_SIGNING",
-                                   {field<&M::target_system>("target_system"),
-                                    field<&M::target_component>("target_component"),
-                                    field<&M::secret_key>("secret_key"),
-                                    field<&M::initial_timestamp>("initial_timestamp")});
+  static const MessageDefinition d(
+      256, "SETUP_SIGNING",
+      {field<&M::target_system>("target_system"), field<&M::target_component>("target_component"),
+       field<&M::secret_key>("secret_key"), field<&M::initial_timestamp>("initial_timestamp")});
   return d;
 }
 

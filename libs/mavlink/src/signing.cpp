@@ -49,9 +49,9 @@ bool is_space(std::uint8_t c) { return c == ' ' || c == '\n' || c == '\r' || c =
 }  // namespace
 
 SigningTimestamp signing_timestamp_now() {
-  const auto us = std::chrono::duration_cast<std::chrono::microseconds>(
-                      std::chrono::system_clock::now().time_since_epoch())
-                      .count();
+  const auto us =
+      std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
+          .count();
   const std::int64_t units = us / 10 - kSigningEpochUnixS * 100'000;
   return units > 0 ? static_cast<SigningTimestamp>(units) : 0;
 }

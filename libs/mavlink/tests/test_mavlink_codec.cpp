@@ -34,8 +34,8 @@ TEST(MavlinkCrc, TheCheckValueOfCrc16Mcrf4xx) {
 TEST(MavlinkMessages, CrcExtraAndLengthsAreThePublishedOnes) {
   // {CRC_EXTRA, MIN_LEN, LEN} of the generated C library (common.h, MAVLINK_MESSAGE_CRCS).
   const std::map<std::uint32_t, std::array<int, 3>> published = {
-      {0, {50, 9, 9}},    {1, {124, 31, 43}},  {31, {246, 32, 48}},  {32, {185, 28, 28}}, {76, {152, 33, 33}},
-      {77, {143, 3, 10}}, {82, {49, 39, 51}},  {83, {22, 37, 37}},   {84, {143, 53, 53}}, {85, {140, 51, 51}},
+      {0, {50, 9, 9}},    {1, {124, 31, 43}},  {31, {246, 32, 48}}, {32, {185, 28, 28}},  {76, {152, 33, 33}},
+      {77, {143, 3, 10}}, {82, {49, 39, 51}},  {83, {22, 37, 37}},  {84, {143, 53, 53}},  {85, {140, 51, 51}},
       {245, {130, 2, 2}}, {253, {83, 51, 54}}, {256, {71, 42, 42}}, {331, {91, 230, 233}}};
   ASSERT_EQ(known_definitions().size(), published.size());
   for (const MessageDefinition* d : known_definitions()) {

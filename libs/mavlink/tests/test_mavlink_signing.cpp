@@ -135,7 +135,9 @@ TEST(MavlinkSigning, OwnTimestampsRiseEveryFrameAndPassTheNewestAccepted) {
   ManualClock clock;
   Signing end(SigningMode::sign, counting_key(), 5, clock.clock());
   const Heartbeat hb = px4_heartbeat();
-  const auto stamp_of_next = [&] { return parse_one(end.encode(Heartbeat::definition(), &hb, {1, 1}, 0)).signature_timestamp(); };
+  const auto stamp_of_next = [&] {
+    return parse_one(end.encode(Heartbeat::definition(), &hb, {1, 1}, 0)).signature_timestamp();
+  };
   EXPECT_EQ(stamp_of_next(), clock.now);
   EXPECT_EQ(stamp_of_next(), clock.now + 1) << "a clock that has not moved: one more than the last";
   clock.now -= 500;  // a clock stepped back never makes a timestamp repeat
@@ -181,9 +183,9 @@ TEST(MavlinkSigningKey, ReadsHexOrRawBytesReadableByItsOwnerOnly) {
 
   const auto open = temp_file("open.key");
   write_file(open, to_hex(counting_key()), 0644);
-  EXPECT_THAT([&] { load_signing_key(open); },
-              ::testing::ThrowsMessage<kestrel::Error>(::testing::AllOf(
-                  ::testing::HasSubstr(open.string()), ::testing::HasSubstr("0644"), ::testing::HasSubstr("chmod 600"))));
+  EXPECT_THAT([&] { load_signing_key(open); }, ::testing::ThrowsMessage<kestrel::Error>(::testing::AllOf(
+                                                   ::testing::HasSubstr(open.string()), ::testing::HasSubstr("0644"),
+                                                   ::testing::HasSubstr("chmod 600"))));
   const auto short_key = temp_file("short.key");
   write_file(short_key, "abcd\n", 0600);
   EXPECT_THAT([&] { load_signing_key(short_key); },

@@ -23,7 +23,7 @@ TEST(MavlinkListen, PrintsEachMessageOnALineOfItsOwnAndTheRates) {
   const std::uint16_t port = kestrel::testing::free_udp_port();
   auto listener = std::async(std::launch::async, [&] {
     return run_command(std::string(KESTREL_CLI) + " mavlink listen udpin://127.0.0.1:" + std::to_string(port) +
-               " --count 4 --duration 20");
+                       " --count 4 --duration 20");
   });
   auto vehicle = UdpTransport(parse_connection_url("udpout://127.0.0.1:" + std::to_string(port)));
   FrameWriter px4({1, mav::comp_autopilot1});
@@ -52,7 +52,7 @@ TEST(MavlinkListen, PrintsEachMessageOnALineOfItsOwnAndTheRates) {
 
 TEST(MavlinkListen, SilenceAndBadUrlsSayWhy) {
   const Output silent = run_command(std::string(KESTREL_CLI) + " mavlink listen udpin://127.0.0.1:" +
-                            std::to_string(kestrel::testing::free_udp_port()) + " --duration 0.3");
+                                    std::to_string(kestrel::testing::free_udp_port()) + " --duration 0.3");
   EXPECT_EQ(silent.status, 1);
   EXPECT_THAT(silent.text, ::testing::HasSubstr("no MAVLink frame received"));
   const Output bad = run_command(std::string(KESTREL_CLI) + " mavlink listen tcp://1.2.3.4:5760");

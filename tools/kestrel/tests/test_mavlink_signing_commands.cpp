@@ -15,8 +15,8 @@
 #include "kestrel/mavlink/messages.hpp"
 #include "kestrel/mavlink/signing.hpp"
 #include "kestrel/mavlink/udp_transport.hpp"
-#include "kestrel/testing/scratch_path.hpp"
 #include "kestrel/testing/run_command.hpp"
+#include "kestrel/testing/scratch_path.hpp"
 #include "kestrel/testing/udp_ports.hpp"
 
 using namespace kestrel::mavlink;
@@ -50,8 +50,8 @@ std::optional<SigningKey> play_autopilot(UdpTransport& socket, bool accept_key, 
       const SetupSigning s = f.as<SetupSigning>();
       if (s.target_system != 1 || s.target_component != mav::comp_autopilot1) continue;
       given = s.secret_key;
-      signed_writer = std::make_unique<FrameWriter>(
-          Sender{1, mav::comp_autopilot1}, std::make_shared<Signing>(SigningMode::require, s.secret_key, 0));
+      signed_writer = std::make_unique<FrameWriter>(Sender{1, mav::comp_autopilot1},
+                                                    std::make_shared<Signing>(SigningMode::require, s.secret_key, 0));
     }
     socket.send(signed_writer ? signed_writer->encode(hb) : unsigned_writer.encode(hb));
   }
@@ -84,7 +84,7 @@ TEST(MavlinkSigningCommands, SetupSigningHandsTheKeyOverAndSeesTheAutopilotSignW
   const std::uint16_t port = socket->local_port();
   auto command = std::async(std::launch::async, [&] {
     return run_command(std::string(KESTREL_CLI) + " mavlink setup-signing udpout://127.0.0.1:" + std::to_string(port) +
-               " --key " + key + " --timeout 10");
+                       " --key " + key + " --timeout 10");
   });
   const std::optional<SigningKey> given = play_autopilot(*socket, true, command);
   const Output out = command.get();
@@ -103,7 +103,7 @@ TEST(MavlinkSigningCommands, SetupSigningSaysSoWhenTheAutopilotNeverSigns) {
   const std::uint16_t port = socket->local_port();
   auto command = std::async(std::launch::async, [&] {
     return run_command(std::string(KESTREL_CLI) + " mavlink setup-signing udpout://127.0.0.1:" + std::to_string(port) +
-               " --key " + key + " --timeout 1.5");
+                       " --key " + key + " --timeout 1.5");
   });
   EXPECT_FALSE(play_autopilot(*socket, false, command).has_value());
   const Output out = command.get();
@@ -112,8 +112,8 @@ TEST(MavlinkSigningCommands, SetupSigningSaysSoWhenTheAutopilotNeverSigns) {
 
   // A key file open to others is refused before anything is sent; a bad URL is a usage error.
   ::chmod(key.c_str(), 0644);
-  const Output exposed =
-      run_command(std::string(KESTREL_CLI) + " mavlink setup-signing udpout://127.0.0.1:9 --key " + key + " --timeout 0.2");
+  const Output exposed = run_command(std::string(KESTREL_CLI) + " mavlink setup-signing udpout://127.0.0.1:9 --key " +
+                                     key + " --timeout 0.2");
   EXPECT_EQ(exposed.status, 1);
   EXPECT_THAT(exposed.text, ::testing::HasSubstr("chmod 600"));
   const Output bad_url = run_command(std::string(KESTREL_CLI) + " mavlink setup-signing tcp://1.2.3.4:5 --key " + key);
