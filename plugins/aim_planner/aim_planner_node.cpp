@@ -20,6 +20,7 @@
 #include <kestrel/plugin.hpp>
 #include <kestrel/tracking/kalman_filter.hpp>
 #include <kestrel/vehicle/airframe.hpp>
+#include <kestrel/vehicle/state_history.hpp>
 #include <optional>
 
 #include "fire_decision.hpp"
@@ -263,7 +264,9 @@ class AimPlannerNode final : public Node {
             "aim point, inheriting the hunter's velocity) and the target extrapolated from its world-frame estimate, "
             "so the shot leads a moving target.")
         .input(kTracks, "the tracker's tracks; the selected one is the target (camera frame)")
-        .input(kOdometry, "the hunter's state", {.trigger = Trigger::latest})
+        .input(kOdometry,
+               "the hunter's every state: the newest steers it; the one at a frame's capture time takes that frame's "
+               "target to the world (kept 2 s)")
         .input(kLauncher,
                "the net launcher's state: no shot while it reloads or is empty, the last net saved for a "
                "better shot (unconnected: unlimited nets)",
@@ -277,6 +280,10 @@ class AimPlannerNode final : public Node {
       : cfg_(init.config<AimPlannerConfig>()), guidance_(init.make_component<guidance::Guidance>("guidance")) {}
 
   void process(Context& ctx) override {
+    if (ctx.triggered_by(kOdometry)) {
+      hunter_states_.add(*ctx.get(kOdometry));
+      return;
+    }
     const auto tracks = ctx.get(kTracks);
     const auto hunter = ctx.get(kOdometry);
     if (!hunter) return;  // nothing to aim from yet
@@ -289,8 +296,11 @@ class AimPlannerNode final : public Node {
     // Nothing is engaged before the take-off height is reached: near the ground the camera sees
     // the ground at grazing angles, and whatever is tracked there is not a flying target.
     if (!armed_ && hunter->position.z() >= takeoff_.position.z() - 0.3) armed_ = true;
+    // Where the camera was when the frame was taken: the tracks come out of the chain later, the
+    // hunter having moved and turned on since.
+    const msg::VehicleState seen_from = hunter_states_.at(tracks->stamp).value_or(*hunter);
     const geometry::CameraPose camera =
-        geometry::camera_on_body(hunter->position, hunter->orientation, cfg_.camera_offset_m);
+        geometry::camera_on_body(seen_from.position, seen_from.orientation, cfg_.camera_offset_m);
     const msg::Track* target = armed_ ? tracks->selected() : nullptr;
     if (target && camera.to_world(target->position()).z() < cfg_.min_target_height_m) {
       ++ground_frames_;
@@ -510,6 +520,7 @@ class AimPlannerNode final : public Node {
   }
 
   AimPlannerConfig cfg_;
+  vehicle::StateHistory hunter_states_;
   std::shared_ptr<guidance::Guidance> guidance_;
   std::optional<AimReference> reference_;
   FireTrigger fire_{cfg_.capture_radius_m, cfg_.dwell_s, cfg_.cooldown_s};

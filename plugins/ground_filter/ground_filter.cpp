@@ -7,6 +7,7 @@
 #include <kestrel/messages/point_cloud.hpp>
 #include <kestrel/messages/vehicle_state.hpp>
 #include <kestrel/plugin.hpp>
+#include <kestrel/vehicle/state_history.hpp>
 
 #include "ground_removal.hpp"
 
@@ -46,11 +47,14 @@ class GroundFilterNode final : public Node {
             "when its disparity exceeds the ground's on that ray by less than margin_px. Far away, where rays graze "
             "the ground and a fraction of a pixel moves a ground point metres along its ray (and so up off the "
             "plane), this holds where a height threshold does not. Needs a stereo cloud (focal_baseline_px_m). "
-            "Without a pose (before the first, or with the input unconnected, as in the still camera's graphs) the "
-            "cloud passes whole, and such clouds are counted.")
+            "The pose is the carrier's at the cloud's capture time, interpolated between the states received (a "
+            "cloud comes out of the depth stage tens of milliseconds after its frame was taken, the vehicle turning "
+            "on meanwhile). Without a pose (before the first, or with the input unconnected, as in the still "
+            "camera's graphs) the cloud passes whole, and such clouds are counted.")
         .input(kCloud, "camera-frame stereo points")
-        .input(kPose, "pose of the vehicle carrying the camera (unconnected: a camera that does not fly)",
-               {.trigger = Trigger::latest, .optional = true})
+        .input(kPose,
+               "every state of the vehicle carrying the camera, kept 2 s (unconnected: a camera that does not fly)",
+               {.optional = true})
         .output(kFiltered, "the points that are not ground")
         .config(std::move(c));
   }
@@ -58,9 +62,13 @@ class GroundFilterNode final : public Node {
   explicit GroundFilterNode(NodeInit& init) : cfg_(init.config<GroundFilterConfig>()) {}
 
   void process(Context& ctx) override {
+    if (ctx.triggered_by(kPose)) {
+      poses_.add(*ctx.get(kPose));
+      return;
+    }
     const auto in = ctx.get(kCloud);
     if (!in->points) throw Error("point cloud message without points");
-    const auto pose = ctx.get(kPose);
+    const auto pose = poses_.at(in->stamp);
     msg::PointCloud out = *in;
     if (pose) {
       if (!(in->focal_baseline_px_m > 0.0))
@@ -93,6 +101,7 @@ class GroundFilterNode final : public Node {
 
  private:
   GroundFilterConfig cfg_;
+  vehicle::StateHistory poses_;
   std::uint64_t clouds_ = 0, points_ = 0, removed_ = 0, without_pose_ = 0;
 };
 KESTREL_REGISTER_NODE(GroundFilterNode)

@@ -8,6 +8,7 @@
 #include <kestrel/messages/detections.hpp>
 #include <kestrel/messages/vehicle_state.hpp>
 #include <kestrel/plugin.hpp>
+#include <kestrel/vehicle/state_history.hpp>
 
 namespace kestrel::gate {
 
@@ -35,11 +36,12 @@ class HeightGateNode final : public Node {
         .describe("the camera's position in the vehicle's body frame (as the camera node has it)");
     return NodeSpec("height_gate", "Drops detections near the ground, using the camera carrier's pose")
         .details(
-            "Each detection's camera-frame position is taken to the world frame with the latest pose of the "
-            "vehicle carrying the camera; those below min_height_m are dropped. Keeps the stamp and frame. "
-            "Without a pose yet, every detection is dropped (their height is unknown).")
+            "Each detection's camera-frame position is taken to the world frame with the pose the vehicle carrying "
+            "the camera had when the frame was taken (interpolated between the states received, at the "
+            "detections' stamp); those below min_height_m are dropped. Keeps the stamp and frame. Without a pose "
+            "yet, every detection is dropped (their height is unknown).")
         .input(kDetections, "detections in the camera frame")
-        .input(kPose, "pose of the vehicle carrying the camera", {.trigger = Trigger::latest})
+        .input(kPose, "every state of the vehicle carrying the camera (kept 2 s)")
         .output(kKept, "the detections above min_height_m")
         .config(std::move(c));
   }
@@ -47,8 +49,12 @@ class HeightGateNode final : public Node {
   explicit HeightGateNode(NodeInit& init) : cfg_(init.config<HeightGateConfig>()) {}
 
   void process(Context& ctx) override {
+    if (ctx.triggered_by(kPose)) {
+      poses_.add(*ctx.get(kPose));
+      return;
+    }
     const auto in = ctx.get(kDetections);
-    const auto pose = ctx.get(kPose);
+    const auto pose = poses_.at(in->stamp);
     msg::Detections out;
     out.stamp = in->stamp;
     out.frame = in->frame;
@@ -73,6 +79,7 @@ class HeightGateNode final : public Node {
 
  private:
   HeightGateConfig cfg_;
+  vehicle::StateHistory poses_;
   std::uint64_t seen_ = 0, dropped_ = 0;
 };
 KESTREL_REGISTER_NODE(HeightGateNode)
