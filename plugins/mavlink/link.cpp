@@ -73,7 +73,8 @@ void Link::read_loop() {
       for (const Frame& f : foreign_parser.feed(std::span(buffer.data(), n))) options_.signing->admit(f);
       std::lock_guard lock(mutex_);
       view_.signatures = options_.signing->counts();
-      view_.foreign_datagrams = transport_->foreign_datagrams();
+      autopilot_heard_ = false;
+      keep_the_peer(LinkClock::now());  // a flood from elsewhere must not stop a silent peer being let go
       continue;
     }
     const auto frames = parser.feed(std::span(buffer.data(), n));
