@@ -18,6 +18,7 @@ struct BatchJob {
 struct BatchResult {
   int exit_code = 0;
   nlohmann::json report;  ///< null if the run wrote none
+  std::string failure;    ///< why a run that left no exit code failed (a Slurm state), else empty
 };
 
 /// SIGINT or SIGTERM stopped the batch; its code is 128 + the signal, as a shell reports it.

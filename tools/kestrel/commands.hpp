@@ -54,6 +54,18 @@ struct PlotArgs {
   std::string meta;  // a JSON file with metrics_meta; default: metrics_meta.json beside the CSV
 };
 
+/// Where the runs of sweep and ab go: here, as child processes, or to a Slurm cluster
+/// (slurm_batch.hpp, docs/cluster.md).
+struct BatchBackend {
+  enum class Kind { local, slurm };
+  Kind kind = Kind::local;
+  std::string partition;                 ///< sbatch --partition (empty: the cluster's default)
+  std::string time;                      ///< sbatch --time per task, e.g. 00:10:00 (empty: the partition's)
+  int array_limit = 0;                   ///< at most this many tasks at once (%N; 0: no limit)
+  std::vector<std::string> sbatch_args;  ///< more sbatch options, e.g. --account=lab
+  bool wait = false;                     ///< block until the collector has written the results
+};
+
 struct SweepArgs {
   std::string graph;
   std::vector<std::string> params;     // node.param=start:stop:step (a grid), or
@@ -63,6 +75,7 @@ struct SweepArgs {
   std::optional<double> duration;
   std::string report_dir;
   int jobs = 0;  // 0: one per core
+  BatchBackend backend;
 };
 
 struct AbArgs {
@@ -74,6 +87,7 @@ struct AbArgs {
   std::optional<double> duration;
   std::string report_dir;
   int jobs = 0;
+  BatchBackend backend;
 };
 
 struct McapInfoArgs {
@@ -89,6 +103,10 @@ struct McapCatArgs {
 };
 
 int run_command(const RunArgs& args);
+/// `kestrel collect DIR`: the results of a batch submitted to Slurm, as sweep or ab writes them.
+int collect_command(const std::string& dir);
+/// `kestrel batch-task DIR I` (run by Slurm, not by people): task I of a submitted batch.
+int batch_task_command(const std::string& dir, std::size_t index);
 int sweep_command(const SweepArgs& args);
 int ab_command(const AbArgs& args);
 int plot_command(const PlotArgs& args);

@@ -2,10 +2,30 @@
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
+#include <map>
 
 #include "commands.hpp"
 #include "kestrel/abi.hpp"
 #include "kestrel/version.hpp"
+
+namespace {
+
+// --backend and Slurm's options, the same on sweep and ab (docs/cluster.md).
+void add_backend_options(CLI::App* cmd, kestrel::cli::BatchBackend& backend) {
+  using Kind = kestrel::cli::BatchBackend::Kind;
+  cmd->add_option("--backend", backend.kind, "where the runs go: local (child processes, the default) or slurm")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, Kind>{{"local", Kind::local}, {"slurm", Kind::slurm}}));
+  cmd->add_option("--partition", backend.partition, "slurm: the partition (default: the cluster's)");
+  cmd->add_option("--time", backend.time, "slurm: each task's time limit, e.g. 00:10:00");
+  cmd->add_option("--array-limit", backend.array_limit, "slurm: at most N tasks at once")
+      ->check(CLI::Range(1, 1000000));
+  cmd->add_option("--sbatch", backend.sbatch_args,
+                  "slurm: one more sbatch option, e.g. --sbatch=--account=lab (repeatable)")
+      ->allow_extra_args(false);
+  cmd->add_flag("--wait", backend.wait, "slurm: wait for the results (else print the job ids and return)");
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace kestrel::cli;
@@ -99,6 +119,7 @@ int main(int argc, char** argv) {
   sweep_cmd->add_option("--report", sweep.report_dir, "write DIR/sweep.csv, sweep.md, sweep.png and every run's report")
       ->required();
   sweep_cmd->add_option("--jobs", sweep.jobs, "runs at once (default: one per core)");
+  add_backend_options(sweep_cmd, sweep.backend);
 
   AbArgs ab;
   auto* ab_cmd =
@@ -112,6 +133,18 @@ int main(int argc, char** argv) {
   ab_cmd->add_option("--duration", ab.duration, "run length in seconds");
   ab_cmd->add_option("--report", ab.report_dir, "write DIR/ab.md, ab.json and every run's report")->required();
   ab_cmd->add_option("--jobs", ab.jobs, "runs at once (default: one per core)");
+  add_backend_options(ab_cmd, ab.backend);
+
+  std::string collect_dir;
+  auto* collect_cmd = app.add_subcommand(
+      "collect", "Summarise a sweep or ab that ran on Slurm (its collector job does this; again at any time)");
+  collect_cmd->add_option("dir", collect_dir, "the batch's --report folder")->required();
+  std::string task_dir;
+  std::size_t task_index = 0;
+  // Run by Slurm for each task of a submitted batch, not by people: hidden from the help.
+  auto* batch_task_cmd = app.add_subcommand("batch-task", "")->group("");
+  batch_task_cmd->add_option("dir", task_dir)->required();
+  batch_task_cmd->add_option("index", task_index)->required();
 
   auto* plugins_cmd = app.add_subcommand("plugins", "List every node type, component and message type");
 
@@ -195,6 +228,8 @@ int main(int argc, char** argv) {
   if (*mot_cmd) return mot_command(mot);
   if (*sweep_cmd) return sweep_command(sweep);
   if (*ab_cmd) return ab_command(ab);
+  if (*collect_cmd) return collect_command(collect_dir);
+  if (*batch_task_cmd) return batch_task_command(task_dir, task_index);
   if (*plot_cmd) return plot_command(plot);
   if (*inspect_cmd) return inspect_command(inspect_name);
   if (*mcap_info_cmd) return mcap_info_command(mcap_info);
