@@ -67,7 +67,7 @@ for _ in $(seq 600); do
 done
 test -s "$work/failing/batch/collected" || { cat "$work/failing/batch/collect.out" >&2; exit 1; }
 [ "$(cat "$work/failing/batch/collected")" = 1 ] || { echo "the collector did not count the failures" >&2; exit 1; }
-for expected in "Slurm task ${array}_2: FAILED, the run exited 1" "Slurm task ${array}_3: never ran"; do
+for expected in "Slurm task ${array}_2: FAILED, the run exited 1" "Slurm task ${array}_3: never ran" "runs/002_"; do
   grep -qF "$expected" "$work/failing/sweep.md" || { echo "sweep.md lacks '$expected'" >&2; cat "$work/failing/sweep.md" >&2; exit 1; }
 done
 grep -q "cannot open trajectory file /nonexistent/flight.csv" "$work/failing/runs/"*002*/run.log

@@ -119,7 +119,7 @@ AbArgs ab_args(const nlohmann::json& j) {
 void add_failures(const std::filesystem::path& summary_md, const std::vector<BatchResult>& results, std::string& md) {
   std::string lines;
   for (std::size_t i = 0; i < results.size(); ++i)
-    if (!results[i].failure.empty()) lines += fmt::format("- run {} (runs/ folder {}): {}\n", i, i, results[i].failure);
+    if (!results[i].failure.empty()) lines += fmt::format("- run {}: {}\n", i, results[i].failure);
   if (lines.empty()) return;
   md += "\nRuns that failed or did not end:\n\n" + lines;
   write_file(summary_md, md);

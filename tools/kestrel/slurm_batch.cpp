@@ -257,7 +257,8 @@ std::vector<BatchResult> collect_slurm_results(const std::filesystem::path& dir,
     const bool ended = static_cast<bool>(code >> r.exit_code);
     if (ended && r.exit_code == 0) continue;
     // A run that failed, or a task that never ran to its end: what Slurm says of it.
-    const std::string task = "Slurm task " + array + "_" + std::to_string(i);
+    const std::string task = "runs/" + jobs[i].report_dir.filename().string() + ", Slurm task " + array + "_" +
+                             std::to_string(i);
     const std::string state = array.empty() ? "" : slurm_state(array, i);
     if (ended) {
       r.failure = task + ": " + (state.empty() ? "" : state + ", ") + "the run exited " + std::to_string(r.exit_code) +
