@@ -25,13 +25,6 @@ using Clock = std::chrono::steady_clock;
 // How long stopped runs get to drain and write their reports before they are killed.
 constexpr auto kGrace = std::chrono::seconds(20);
 
-std::string self_path() {
-  std::error_code ec;
-  const auto p = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (ec) throw Error("cannot find the kestrel executable: " + ec.message());
-  return p.string();
-}
-
 // While a batch runs, SIGINT, SIGTERM and SIGCHLD are blocked and taken with sigtimedwait: no
 // handler, and no signal lost between checking for one and waiting for the next.
 class BlockedSignals {
@@ -102,8 +95,15 @@ const char* signal_name(int sig) { return sig == SIGINT ? "SIGINT" : sig == SIGT
 
 }  // namespace
 
+std::string kestrel_executable() {
+  std::error_code ec;
+  const auto p = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) throw Error("cannot find the kestrel executable: " + ec.message());
+  return p.string();
+}
+
 std::vector<BatchResult> run_batch(const std::vector<BatchJob>& jobs, int parallel) {
-  const std::string exe = self_path();
+  const std::string exe = kestrel_executable();
   const BlockedSignals blocked;
   std::vector<BatchResult> results(jobs.size());
   std::map<pid_t, std::size_t> running;

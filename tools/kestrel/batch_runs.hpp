@@ -32,6 +32,9 @@ class Interrupted : public CommandError {
   int signal_;
 };
 
+/// The path of the running kestrel executable, which every run of a batch is started as.
+std::string kestrel_executable();
+
 /// Runs the jobs with at most `parallel` at once; each job's output goes to report_dir/run.log.
 /// On SIGINT or SIGTERM it starts no more runs, stops the running ones (each drains and writes
 /// its report; a second signal, or 20 s, kills them), waits for them and throws Interrupted.

@@ -23,13 +23,6 @@ namespace {
 
 std::filesystem::path batch_dir(const std::filesystem::path& dir) { return dir / "batch"; }
 
-std::string self_exe() {
-  std::error_code ec;
-  const auto p = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (ec) throw Error("cannot find the kestrel executable: " + ec.message());
-  return p.string();
-}
-
 struct ToolOutput {
   int exit_code = -1;
   std::string out;  ///< standard output and error together
@@ -161,7 +154,7 @@ SlurmJobs submit_to_slurm(const std::filesystem::path& dir, const nlohmann::json
   for (const BatchJob& j : jobs) tasks.push_back({{"args", j.args}, {"report_dir", j.report_dir.string()}});
   write_file(batch / "command.json", command.dump(1) + "\n");
   write_file(batch / "tasks.json", tasks.dump(1) + "\n");
-  const std::string exe = self_exe();
+  const std::string exe = kestrel_executable();
   // Tasks run where the command was run, as local runs do: relative paths in --set mean the same.
   const std::string workdir = std::filesystem::current_path().string();
 
@@ -257,8 +250,8 @@ std::vector<BatchResult> collect_slurm_results(const std::filesystem::path& dir,
     const bool ended = static_cast<bool>(code >> r.exit_code);
     if (ended && r.exit_code == 0) continue;
     // A run that failed, or a task that never ran to its end: what Slurm says of it.
-    const std::string task = "runs/" + jobs[i].report_dir.filename().string() + ", Slurm task " + array + "_" +
-                             std::to_string(i);
+    const std::string task =
+        "runs/" + jobs[i].report_dir.filename().string() + ", Slurm task " + array + "_" + std::to_string(i);
     const std::string state = array.empty() ? "" : slurm_state(array, i);
     if (ended) {
       r.failure = task + ": " + (state.empty() ? "" : state + ", ") + "the run exited " + std::to_string(r.exit_code) +
