@@ -35,6 +35,8 @@ if(NOT LZ4_FOUND)
 endif()
 # MAVLink 2 signing: SHA-256 and the random source for keys (libcrypto).
 kestrel_require(OpenSSL libssl-dev 3 COMPONENTS Crypto)
+# DDS as ROS 2 speaks it (dds_bridge, kestrel dds): Eclipse Cyclone DDS, ROS 2 Humble's rmw_cyclonedds.
+kestrel_require(CycloneDDS cyclonedds-dev 0.10)
 kestrel_require(mrpt-bayes libmrpt-bayes-dev)
 kestrel_require(mrpt-opengl libmrpt-opengl-dev)
 if(KESTREL_BUILD_TESTS)
