@@ -35,7 +35,9 @@ struct RunArgs : GraphArgs {
   bool progress = true;
   std::string record;                 // --record FILE.mcap: a recorder node is added
   std::optional<std::string> live;    // --live [ADDRESS:]PORT: a foxglove_bridge node is added
-  std::optional<std::string> topics;  // --topics PATTERNS for it
+  std::optional<std::string> topics;  // --topics PATTERNS for them
+  bool dds = false;                   // --dds: a dds_bridge node is added
+  std::optional<std::int64_t> dds_domain;  // --dds-domain N (else ROS_DOMAIN_ID, else 0)
 };
 
 struct MotArgs {
@@ -117,6 +119,21 @@ int plugins_command();
 int inspect_command(const std::string& name);
 int mcap_info_command(const McapInfoArgs& args);
 int mcap_cat_command(const McapCatArgs& args);
+
+/// `kestrel dds list` and `kestrel dds echo` (dds_commands.cpp, docs/ros2.md).
+struct DdsArgs {
+  std::optional<std::int64_t> domain;  // else ROS_DOMAIN_ID, else 0
+  double wait_s = 2.0;                 // list: how long to listen to discovery; echo: for the topic's writer
+  bool json = false;                   // list: JSON lines
+  std::string topic;                   // echo: the ROS 2 topic
+  std::optional<std::uint64_t> count;  // echo: stop after N messages
+  std::optional<double> duration_s;    // echo: stop after this long
+};
+int dds_list_command(const DdsArgs& args);
+int dds_echo_command(const DdsArgs& args);
+/// The DDS domain: --domain/--dds-domain, else ROS_DOMAIN_ID (as ROS 2 reads it), else 0. Throws
+/// kestrel::Error for an id out of range or a ROS_DOMAIN_ID that is not a number.
+std::uint32_t dds_domain(std::optional<std::int64_t> given);
 
 struct CalibrateArgs {
   std::string left, right;    // folders or numbered patterns of the chessboard pairs

@@ -71,8 +71,23 @@ int run_command(const RunArgs& args) {
     if (args.topics) params["topics"] = *args.topics;
     with_extras.fragments.push_back(
         {"--record", "nodes: [{id: recorder, type: recorder, params: " + params.dump() + "}]"});
-  } else if (args.topics) {
-    spdlog::error("--topics chooses what --record records; give --record FILE.mcap too");
+  } else if (args.topics && !args.dds) {
+    spdlog::error("--topics chooses what --record records and --dds publishes; give one of them too");
+    return kUsage;
+  }
+  if (args.dds) {
+    std::uint32_t domain = 0;
+    try {
+      domain = dds_domain(args.dds_domain);
+    } catch (const Error& e) {
+      spdlog::error("{}", e.what());
+      return kUsage;
+    }
+    const nlohmann::json params = {{"domain_id", domain}, {"publish", args.topics.value_or("")}};
+    with_extras.fragments.push_back(
+        {"--dds", "nodes: [{id: dds, type: dds_bridge, params: " + params.dump() + "}]"});
+  } else if (args.dds_domain) {
+    spdlog::error("--dds-domain goes with --dds");
     return kUsage;
   }
   if (args.live) {

@@ -58,9 +58,13 @@ int main(int argc, char** argv) {
                       "serve the run live over the Foxglove WebSocket protocol on PORT of this machine (127.0.0.1), or "
                       "on ADDRESS:PORT (0.0.0.0:8765: every interface, with a warning) (a `foxglove_bridge` node is "
                       "added; open ws://HOST:PORT in Foxglove or Lichtblick, docs/recording.md)");
+  run_cmd->add_flag("--dds", run.dds,
+                    "publish the run on DDS topics as ROS 2 names them (rt/NODE/PORT; a `dds_bridge` node is added, "
+                    "docs/ros2.md)");
+  run_cmd->add_option("--dds-domain", run.dds_domain, "the DDS domain for --dds (default: ROS_DOMAIN_ID, else 0)");
   run_cmd->add_option("--topics", run.topics,
-                      "what --record records: topic patterns /NODE/PORT, '*' for all, '!PATTERN' to leave out "
-                      "(default: every connection but point clouds)");
+                      "what --record records and --dds publishes: topic patterns /NODE/PORT, '*' for all, "
+                      "'!PATTERN' to leave out (default: every connection but point clouds)");
 
   GraphArgs validate;
   auto* validate_cmd = app.add_subcommand("validate", "Check a graph and report every problem with file:line:col");
@@ -167,6 +171,24 @@ int main(int argc, char** argv) {
   mcap_cat_cmd->add_option("--topic", mcap_cat.topics, "only this topic (repeatable; default: every topic)");
   mcap_cat_cmd->add_option("--limit", mcap_cat.limit, "print at most N messages");
 
+  auto* dds_cmd =
+      app.add_subcommand("dds", "Topics on DDS, as ROS 2 sees them (docs/ros2.md)")->require_subcommand(1);
+  DdsArgs dds_list;
+  auto* dds_list_cmd = dds_cmd->add_subcommand(
+      "list", "Discover the ROS 2 topics of a DDS domain: name, type, publishers and subscribers (ros2 topic list -t)");
+  dds_list_cmd->add_option("--domain", dds_list.domain, "DDS domain (default: ROS_DOMAIN_ID, else 0)");
+  dds_list_cmd->add_option("--wait", dds_list.wait_s, "seconds to listen to discovery (default 2)");
+  dds_list_cmd->add_flag("--json", dds_list.json, "one JSON object per topic instead of text");
+  DdsArgs dds_echo;
+  auto* dds_echo_cmd = dds_cmd->add_subcommand(
+      "echo", "Print a topic's messages as JSON lines: {\"source_time\": NS, \"topic\": T, \"message\": {...}}");
+  dds_echo_cmd->add_option("topic", dds_echo.topic, "ROS 2 topic, /NODE/PORT")->required();
+  dds_echo_cmd->add_option("--domain", dds_echo.domain, "DDS domain (default: ROS_DOMAIN_ID, else 0)");
+  dds_echo_cmd->add_option("--wait", dds_echo.wait_s, "seconds to wait for the topic's first writer (default 10)")
+      ->default_val(10.0);
+  dds_echo_cmd->add_option("--count", dds_echo.count, "stop after printing N messages");
+  dds_echo_cmd->add_option("--duration", dds_echo.duration_s, "stop after this many seconds");
+
   auto* devices_cmd = app.add_subcommand(
       "devices", "List V4L2 cameras and serial ports, with their formats, and which look like an oCamS");
 
@@ -237,6 +259,8 @@ int main(int argc, char** argv) {
   if (*devices_cmd) return devices_command();
   if (*calibrate_cmd) return calibrate_command(calibrate);
   if (*mavlink_listen_cmd) return mavlink_listen_command(mavlink_listen);
+  if (*dds_list_cmd) return dds_list_command(dds_list);
+  if (*dds_echo_cmd) return dds_echo_command(dds_echo);
   if (*mavlink_keygen_cmd) return mavlink_keygen_command(keygen_file);
   if (*mavlink_setup_signing_cmd) return mavlink_setup_signing_command(setup_signing);
   return kUsage;
