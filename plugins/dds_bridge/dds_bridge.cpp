@@ -30,7 +30,26 @@ struct DdsBridgeConfig {
   dds::Durability durability = dds::Durability::volatile_;
   std::string qos_overrides;
   double poll_rate_hz = 500.0;
+  bool restamp = true;
+  bool end_with_writers = false;
 };
+
+// The system time, in ns since the epoch, at which this run's clock read zero. The realtime
+// executor's clock is the steady clock from the run's start; two processes on one machine (or
+// machines whose clocks agree, by NTP or PTP) agree on the system time.
+std::int64_t clock_origin_ns(Time now) {
+  const auto system = std::chrono::duration_cast<std::chrono::nanoseconds>(
+      std::chrono::system_clock::now().time_since_epoch());
+  return system.count() - std::chrono::duration_cast<std::chrono::nanoseconds>(now).count();
+}
+
+// A copy of `message` with its stamp moved by `offset`.
+template <class T>
+std::shared_ptr<const void> restamped(const std::shared_ptr<const void>& message, Time offset) {
+  auto copy = std::make_shared<T>(*std::static_pointer_cast<const T>(message));
+  copy->stamp += offset;
+  return copy;
+}
 
 class DdsBridgeNode final : public Node {
  public:
@@ -77,6 +96,14 @@ class DdsBridgeNode final : public Node {
         .describe(
             "per-topic QoS: 'PATTERN: WORDS; PATTERN: WORDS', words among reliable, best_effort, volatile, "
             "transient_local, depth=N; patterns are globs on the ROS 2 topic, applied in order");
+    c.param("restamp", &C::restamp)
+        .describe(
+            "put received stamps on this run's clock (realtime runs announce when their clock read zero), so that "
+            "latencies measured here count from the capture in the other process; off: stamps as sent");
+    c.param("end_with_writers", &C::end_with_writers)
+        .describe(
+            "end the stream once every subscribed topic has had a writer and none has one any more (the other "
+            "process's run ended), after taking what they sent: a ground run ends with the vehicle's");
     c.param("poll_rate_hz", &C::poll_rate_hz)
         .with_unit("Hz")
         .range(1.0, 10000.0)
@@ -106,6 +133,7 @@ class DdsBridgeNode final : public Node {
         qos_(dds::Qos{cfg_.reliability, static_cast<std::int32_t>(cfg_.depth), cfg_.durability}, cfg_.qos_overrides),
         participant_(static_cast<std::uint32_t>(cfg_.domain_id)),
         publication_(participant_, qos_, cfg_.prefix, cfg_.derived) {
+    realtime_ = init.realtime();
     if (!cfg_.prefix.empty()) dds::ros2_dds_topic(cfg_.prefix);  // refused now, not at the first message
     auto ports = subscribed_ports(cfg_);
     if (!ports.empty()) {
@@ -116,25 +144,30 @@ class DdsBridgeNode final : public Node {
     }
   }
 
-  void process(Context& ctx) override { publication_.publish(ctx.envelope(kIn.name)); }
+  void process(Context& ctx) override {
+    // Only a realtime run's clock is tied to the system's; a lockstep run's is simulated.
+    if (realtime_ && !publication_.has_clock_origin()) publication_.set_clock_origin(clock_origin_ns(ctx.now()));
+    publication_.publish(ctx.envelope(kIn.name));
+  }
 
   void tick(Context& ctx) override {
     if (!subscription_) return;
-    subscription_->take(ctx.log(), [&](std::size_t port, std::shared_ptr<const void> message) {
-      publish(ctx, subscription_->ports().at(port).port, std::move(message));
-    });
+    if (!own_origin_ns_) own_origin_ns_ = clock_origin_ns(ctx.now());
+    // Asked before taking: what a writer sent before it left is taken below, then the stream ends.
+    const bool gone = cfg_.end_with_writers && subscription_->writers_gone();
+    take(ctx);
+    if (gone) ctx.end_of_stream();
   }
 
   void finish(Context& ctx) override {
     ReportSection section;
-    section.info("domain_id", cfg_.domain_id);
+    section.quantity("domain_id", cfg_.domain_id);
     publication_.report(section);
     std::string received;
     if (subscription_) {
-      subscription_->take(ctx.log(), [&](std::size_t port, std::shared_ptr<const void> message) {
-        publish(ctx, subscription_->ports().at(port).port, std::move(message));
-      });
+      if (own_origin_ns_) take(ctx);
       subscription_->report(section);
+      section.info("restamped", restamped_);
       for (const auto& topic : subscription_->never_matched())
         ctx.log().warn("no DDS writer of {} was ever found (another domain, type or QoS?)", topic);
       received = fmt::format(", received {} messages ({} samples that did not decode)", received_,
@@ -165,8 +198,29 @@ class DdsBridgeNode final : public Node {
     ctx.publish(port, std::static_pointer_cast<const T>(std::move(message)));
   }
 
-  void publish(Context& ctx, const std::string& port, std::shared_ptr<const void> message) {
+  void take(Context& ctx) {
+    subscription_->take(ctx.log(), [&](std::size_t port, std::shared_ptr<const void> message,
+                                       const dds::WriterMetadata& metadata) {
+      publish(ctx, subscription_->ports().at(port).port, std::move(message), stamp_offset(metadata));
+    });
+  }
+
+  // How far the writer's clock is behind this run's: its origin minus ours.
+  Time stamp_offset(const dds::WriterMetadata& metadata) {
+    if (!cfg_.restamp || !own_origin_ns_) return Time(0);
+    const auto it = metadata.find(kClockOriginKey);
+    if (it == metadata.end()) return Time(0);
+    try {
+      restamped_ = true;
+      return Time(std::stoll(it->second) - *own_origin_ns_);
+    } catch (const std::exception&) {
+      return Time(0);  // not a number: stamps as sent
+    }
+  }
+
+  void publish(Context& ctx, const std::string& port, std::shared_ptr<const void> message, Time offset) {
     ++received_;
+    if (offset != Time(0)) message = restamp(port, message, offset);
     if (port == "frame") return send(ctx, kFrame, std::move(message));
     if (port == "truth") return send(ctx, kTruth, std::move(message));
     if (port == "cloud") return send(ctx, kCloud, std::move(message));
@@ -176,7 +230,21 @@ class DdsBridgeNode final : public Node {
     send(ctx, kState, std::move(message));
   }
 
+  static std::shared_ptr<const void> restamp(const std::string& port, const std::shared_ptr<const void>& m,
+                                             Time offset) {
+    if (port == "frame") return restamped<msg::StereoFrame>(m, offset);
+    if (port == "truth") return restamped<msg::GroundTruth>(m, offset);
+    if (port == "cloud") return restamped<msg::PointCloud>(m, offset);
+    if (port == "detections") return restamped<msg::Detections>(m, offset);
+    if (port == "tracks") return restamped<msg::Tracks>(m, offset);
+    if (port == "imu") return restamped<msg::Imu>(m, offset);
+    return restamped<msg::VehicleState>(m, offset);
+  }
+
   DdsBridgeConfig cfg_;
+  bool realtime_ = false;
+  std::optional<std::int64_t> own_origin_ns_;
+  bool restamped_ = false;
   dds::QosTable qos_;
   dds::Participant participant_;
   DdsPublication publication_;

@@ -36,7 +36,9 @@ void DdsPublication::publish(const Envelope& e) {
   for (const auto& m : encoded.messages) {
     const ros2::ChannelSpec& spec = known->second.at(m.channel);
     if (spec.derived && !derived_) continue;
-    Channel& c = channel(spec, spec.derived ? ros2::ChannelMetadata{} : encoded.metadata);
+    ros2::ChannelMetadata metadata = spec.derived ? ros2::ChannelMetadata{} : encoded.metadata;
+    if (clock_origin_ns_) metadata[kClockOriginKey] = std::to_string(*clock_origin_ns_);
+    Channel& c = channel(spec, metadata);
     c.writer->write(m.cdr);
     ++by_topic_[c.writer->topic().substr(2)];
     ++samples_;

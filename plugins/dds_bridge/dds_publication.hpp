@@ -9,6 +9,7 @@
 #include <kestrel/report_section.hpp>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,11 @@ class DdsPublication {
   /// `prefix` goes before every topic ("/vehicle": /vehicle/tracker/tracks); `derived`: also the
   /// channels for viewers (markers, /tf).
   DdsPublication(const dds::Participant& participant, dds::QosTable qos, std::string prefix, bool derived);
+
+  /// Announces, on every writer, the system time (ns since the epoch) at which this run's clock
+  /// read zero, so that a reader in another process can put the stamps on its own clock.
+  void set_clock_origin(std::int64_t origin_ns) { clock_origin_ns_ = origin_ns; }
+  bool has_clock_origin() const { return clock_origin_ns_.has_value(); }
 
   /// Writes one tapped message. Throws kestrel::Error (a topic name ROS 2 refuses, a refused write).
   void publish(const Envelope& e);
@@ -45,6 +51,10 @@ class DdsPublication {
   std::map<std::string, std::uint64_t> by_topic_;
   std::map<std::string, std::uint64_t> unpublished_;  // by kestrel type: no ROS 2 mapping
   std::uint64_t samples_ = 0, bytes_ = 0;
+  std::optional<std::int64_t> clock_origin_ns_;
 };
+
+/// The writer metadata key of a run's clock origin.
+inline constexpr const char* kClockOriginKey = "kestrel_clock_origin_ns";
 
 }  // namespace kestrel::dds_bridge

@@ -21,15 +21,15 @@ DdsSubscription::DdsSubscription(const dds::Participant& participant, const dds:
   }
 }
 
-void DdsSubscription::take(Logger& log, const std::function<void(std::size_t, std::shared_ptr<const void>)>& publish) {
+void DdsSubscription::take(Logger& log, const Publish& publish) {
   for (Input& in : inputs_) {
     if (!in.matched && in.reader->matched_writers() > 0) in.matched = true;
     in.reader->take([&](dds::ReceivedSample&& sample) {
       ++samples_;
       std::shared_ptr<const void> message;
+      const dds::WriterMetadata metadata = in.reader->writer_metadata(sample.writer);
       try {
-        message =
-            decoders_[in.port]->feed(in.index, sample.cdr, in.sequence++, in.reader->writer_metadata(sample.writer));
+        message = decoders_[in.port]->feed(in.index, sample.cdr, in.sequence++, metadata);
       } catch (const std::exception& e) {
         ++bad_samples_;
         if (!warned_[in.topic]) {
@@ -40,9 +40,15 @@ void DdsSubscription::take(Logger& log, const std::function<void(std::size_t, st
       }
       if (!message) return;
       ++received_[ports_[in.port].port];
-      publish(in.port, std::move(message));
+      publish(in.port, std::move(message), metadata);
     });
   }
+}
+
+bool DdsSubscription::writers_gone() const {
+  for (const Input& in : inputs_)
+    if (!in.matched || in.reader->matched_writers() > 0) return false;
+  return true;
 }
 
 std::vector<std::string> DdsSubscription::never_matched() const {

@@ -30,15 +30,18 @@ class DdsSubscription {
   /// Throws kestrel::Error (a type that cannot be read back, a topic name ROS 2 refuses).
   DdsSubscription(const dds::Participant& participant, const dds::QosTable& qos, std::vector<SubscribedPort> ports);
 
-  /// Takes what has arrived and calls `publish(port index, message)` for each kestrel message
-  /// complete, in arrival order.
-  void take(Logger& log, const std::function<void(std::size_t, std::shared_ptr<const void>)>& publish);
+  /// Takes what has arrived and calls `publish(port index, message, metadata)` for each kestrel
+  /// message complete, in arrival order, with the metadata of the writer of its last part.
+  using Publish = std::function<void(std::size_t, std::shared_ptr<const void>, const dds::WriterMetadata&)>;
+  void take(Logger& log, const Publish& publish);
 
   const std::vector<SubscribedPort>& ports() const { return ports_; }
   void report(ReportSection& section) const;
   std::uint64_t bad_samples() const { return bad_samples_; }
   /// Topics no writer ever matched.
   std::vector<std::string> never_matched() const;
+  /// Every topic has had a writer, and none has one now: the other side has gone.
+  bool writers_gone() const;
 
  private:
   struct Input {

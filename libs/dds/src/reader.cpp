@@ -41,6 +41,14 @@ std::size_t Reader::take(const std::function<void(ReceivedSample&&)>& each) {
       if (info[i].valid_data) {
         ReceivedSample sample{static_cast<detail::RawSerdata*>(data[i])->bytes, info[i].source_timestamp,
                               info[i].publication_handle};
+        // The padding the writer added (the encapsulation options' low bits) is not the message's.
+        if (sample.cdr.size() >= 4) {
+          const std::size_t pad = sample.cdr[3] & 3u;
+          if (pad > 0 && sample.cdr.size() >= 4 + pad) {
+            sample.cdr.resize(sample.cdr.size() - pad);
+            sample.cdr[3] = static_cast<std::uint8_t>(sample.cdr[3] & ~3u);
+          }
+        }
         ++taken;
         ddsi_serdata_unref(data[i]);
         data[i] = nullptr;

@@ -64,7 +64,18 @@ Writer::~Writer() {
 void Writer::write(std::span<const std::uint8_t> cdr) {
   if (cdr.size() < 4)
     throw Error(fmt::format("writing '{}': {} bytes hold no CDR encapsulation header", topic_, cdr.size()));
-  const detail::RawSample sample{cdr.data(), cdr.size()};
+  // DDS carries whole 4-byte words: pad, and say how much in the encapsulation options' low
+  // bits, as the CDR specification (XTypes 1.3, 7.6.3.1.2) and ROS 2's RMWs do.
+  const std::size_t pad = (4 - cdr.size() % 4) % 4;
+  if (pad == 0) {
+    const detail::RawSample sample{cdr.data(), cdr.size()};
+    detail::check(dds_write(writer_, &sample), fmt::format("writing '{}'", topic_));
+    return;
+  }
+  padded_.assign(cdr.begin(), cdr.end());
+  padded_.resize(cdr.size() + pad, 0);
+  padded_[3] = static_cast<std::uint8_t>((padded_[3] & ~3u) | pad);
+  const detail::RawSample sample{padded_.data(), padded_.size()};
   detail::check(dds_write(writer_, &sample), fmt::format("writing '{}'", topic_));
 }
 

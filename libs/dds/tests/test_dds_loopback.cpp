@@ -46,14 +46,17 @@ TEST_F(DdsLoopback, BytesArriveAsWrittenInOrder) {
   Reader reader(ground, "rt/test/bytes", "kestrel_msgs::msg::dds_::Detections_", Qos{});
   ASSERT_TRUE(writer.wait_for_readers(1, 10s));
   ASSERT_TRUE(reader.wait_for_writers(1, 10s));
-  // One small, and one larger than a UDP datagram, which Cyclone fragments.
-  const auto small = message(7, 24), large = message(9, 200000);
+  // One small, one larger than a UDP datagram (Cyclone fragments it), and one that is no whole
+  // number of 4-byte words (padded on the wire, the padding taken off again).
+  const auto small = message(7, 24), large = message(9, 200000), odd = message(3, 27);
   writer.write(small);
   writer.write(large);
-  const auto got = take_until(reader, 2, 10s);
-  ASSERT_EQ(got.size(), 2u);
+  writer.write(odd);
+  const auto got = take_until(reader, 3, 10s);
+  ASSERT_EQ(got.size(), 3u);
   EXPECT_EQ(got[0].cdr, small);
   EXPECT_EQ(got[1].cdr, large);
+  EXPECT_EQ(got[2].cdr, odd);
   EXPECT_GT(got[0].source_time_ns, 0);
   EXPECT_EQ(reader.lost_samples(), 0u);
 }

@@ -45,7 +45,9 @@ class DdsBridge : public ::testing::Test {
     Logger log("ground");
     const auto deadline = std::chrono::steady_clock::now() + 10s;
     while (got.size() < count && std::chrono::steady_clock::now() < deadline) {
-      s.take(log, [&](std::size_t port, std::shared_ptr<const void> m) { got.emplace_back(port, std::move(m)); });
+      s.take(log, [&](std::size_t port, std::shared_ptr<const void> m, const dds::WriterMetadata&) {
+        got.emplace_back(port, std::move(m));
+      });
       std::this_thread::sleep_for(5ms);
     }
     return got;
@@ -188,7 +190,7 @@ TEST_F(DdsBridge, BytesThatDoNotDecodeAreCountedAndDropped) {
   const auto deadline = std::chrono::steady_clock::now() + 10s;
   std::size_t published = 0;
   while (subscription.bad_samples() == 0 && std::chrono::steady_clock::now() < deadline) {
-    subscription.take(log, [&](std::size_t, std::shared_ptr<const void>) { ++published; });
+    subscription.take(log, [&](std::size_t, std::shared_ptr<const void>, const dds::WriterMetadata&) { ++published; });
     std::this_thread::sleep_for(5ms);
   }
   EXPECT_EQ(subscription.bad_samples(), 1u);

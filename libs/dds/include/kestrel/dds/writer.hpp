@@ -6,6 +6,7 @@
 #include <map>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "kestrel/dds/participant.hpp"
 #include "kestrel/dds/qos.hpp"
@@ -25,7 +26,8 @@ class Writer {
   Writer(const Writer&) = delete;
   Writer& operator=(const Writer&) = delete;
 
-  /// Sends one sample. Throws kestrel::Error when Cyclone refuses it (bytes not starting with
+  /// Sends one sample, padded to whole 4-byte words as DDS requires (the encapsulation options
+  /// say how many bytes were added; readers take them off). Throws kestrel::Error when Cyclone refuses it (bytes not starting with
   /// an encapsulation header, a deleted participant).
   void write(std::span<const std::uint8_t> cdr);
   /// Announces new metadata (discovery carries it to the readers).
@@ -43,6 +45,7 @@ class Writer {
   std::string topic_;
   std::int32_t topic_entity_ = 0, writer_ = 0;
   WriterMetadata metadata_;
+  std::vector<std::uint8_t> padded_;
 };
 
 /// "k=v;k2=v2;" (ROS 2's USER_DATA form). Throws kestrel::Error for a key or value holding '=' or ';'.
