@@ -14,6 +14,9 @@ needs an entry: a new graph without one fails its test.
                                           without one (or nothing)
   outcomes.py signing GRAPH               for a graph that signs its MAVLink link: the nodes given
                                           a new key file (signing_key_file) for the run
+  outcomes.py split GRAPH                 for half of a graph split over DDS: "NODE PARTNER PARTNER_NODE
+                                          ORDER" (its dds_bridge, the other half's graph and bridge,
+                                          and whether the other half starts first or second)
 
 In the checks, `d` is the report's "detection" section, `t` its "tracking" section, `s` the run
 length in seconds and `frames` the camera frames in it (30 FPS).
@@ -78,6 +81,12 @@ NEEDS_HARDWARE = {"ocams_detection": "no oCamS found",
 # Graphs whose MAVLink link is signed: the test writes a fresh key (kestrel mavlink keygen) and
 # gives it to these nodes, as a user does before the first run.
 SIGNED_NODES = {"sitl_intercept_signed": ["link", "telemetry", "hunter"]}
+
+# Graphs split over DDS: each half runs with the other in a second process, on the loopback
+# interface and a DDS domain of the test's own (both bridges get it). The ground starts first and
+# ends when the vehicle does; `live` is the other half's report.
+SPLIT = {"split_vehicle": ("dds", "split_ground", "vehicle", "first"),
+         "split_ground": ("vehicle", "split_vehicle", "dds", "second")}
 
 # The oCamS's GRBG filter samples one colour a pixel and demosaicing interpolates the others: at
 # most a pixel of smoothing at the silhouette's edge, 5.0 / 304 = 0.016 m sideways at 5 m, and a
@@ -223,6 +232,35 @@ OUTCOMES["sitl_intercept_signed"] = (OUTCOMES["sitl_intercept"][0], OUTCOMES["si
 ] + [(f"r['{n}']['{k}'] == 0", "nothing refused on a clean link")
      for n in ("link", "telemetry", "hunter") for k in ("unsigned_frames", "bad_signature", "replayed_frames")])
 
+# The vehicle's half: it flies the interception, and the ground received every message it
+# published (reliable, transient local: none lost, none before discovery matched).
+OUTCOMES["split_vehicle"] = (12.0, [
+    ("r['control']['captured'] is True and r['control']['time_to_capture_s'] <= 12.0",
+     "the intruder is caught, as in sim_intercept"),
+    ("r['hunter']['touchdowns'] == 0 and r['controller']['faults'] == 0", "no crash, no fault"),
+    ("r['dds']['published_by_topic']['/gate/detections'] > 0", "detections went out"),
+] + [(f"r['dds']['published_by_topic']['{topic}'] == live['vehicle']['received']['{port}']",
+      f"every {port} message published reached the ground")
+     for topic, port in (("/gate/detections", "detections"), ("/camera/truth", "truth"),
+                         ("/tracker/tracks", "tracks"), ("/hunter/state", "state"))])
+# The ground's half: it scored every detection and track message the vehicle sent, against the
+# truth of the same capture, with the paper's accuracy, its lag counted from the capture on the
+# vehicle across DDS; nothing failed to decode or was lost; it ended with the vehicle's run.
+OUTCOMES["split_ground"] = (60.0, [
+    ("d['frames'] == live['dds']['published_by_topic']['/gate/detections'] and d['unpaired']['messages'] == 0",
+     "every detection message the vehicle sent was scored against its truth"),
+    ("t['frames'] == live['dds']['published_by_topic']['/tracker/tracks'] and t['unpaired']['messages'] == 0",
+     "every track message too"),
+    ("d['tp'] > 0 and d['precision'] >= 0.5", "the intruder was seen (realtime on a busy machine drops frames)"),
+    (f"d['rmse_m']['x'] <= {X_BOUND_M} and d['rmse_m']['y'] <= {Y_BOUND_M} and d['rmse_m']['z'] <= {Z_BOUND_M:.3f}",
+     "the paper's accuracy: the positions arrived exactly"),
+    ("r['vehicle']['restamped'] is True and 0 < d['lag_s'] < 1.0",
+     "stamps on the ground's clock: the lag counts from the capture on the vehicle"),
+    ("r['vehicle']['bad_samples'] == 0 and r['vehicle']['lost_samples'] == 0", "nothing undecodable, nothing lost"),
+    ("r['run_time_s'] < s - 10", "the run ended with the vehicle's, not at its own duration"),
+    ("r['recorder']['messages'] >= live['dds']['published'] / 2", "what arrived was recorded"),
+])
+
 
 def main(argv):
     if len(argv) == 3 and argv[1] == "duration":
@@ -240,6 +278,10 @@ def main(argv):
     if len(argv) == 3 and argv[1] == "signing":
         for node in SIGNED_NODES.get(argv[2], []):
             print(node)
+        return 0
+    if len(argv) == 3 and argv[1] == "split":
+        if argv[2] in SPLIT:
+            print(*SPLIT[argv[2]])
         return 0
     if len(argv) == 3 and argv[1] == "hardware":
         print(NEEDS_HARDWARE.get(argv[2], ""))
