@@ -38,8 +38,8 @@ struct DdsBridgeConfig {
 // executor's clock is the steady clock from the run's start; two processes on one machine (or
 // machines whose clocks agree, by NTP or PTP) agree on the system time.
 std::int64_t clock_origin_ns(Time now) {
-  const auto system = std::chrono::duration_cast<std::chrono::nanoseconds>(
-      std::chrono::system_clock::now().time_since_epoch());
+  const auto system =
+      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch());
   return system.count() - std::chrono::duration_cast<std::chrono::nanoseconds>(now).count();
 }
 
@@ -199,10 +199,10 @@ class DdsBridgeNode final : public Node {
   }
 
   void take(Context& ctx) {
-    subscription_->take(ctx.log(), [&](std::size_t port, std::shared_ptr<const void> message,
-                                       const dds::WriterMetadata& metadata) {
-      publish(ctx, subscription_->ports().at(port).port, std::move(message), stamp_offset(metadata));
-    });
+    subscription_->take(
+        ctx.log(), [&](std::size_t port, std::shared_ptr<const void> message, const dds::WriterMetadata& metadata) {
+          publish(ctx, subscription_->ports().at(port).port, std::move(message), stamp_offset(metadata));
+        });
   }
 
   // How far the writer's clock is behind this run's: its origin minus ours.

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "cyclone.hpp"
+#include "kestrel/dds/cdr_padding.hpp"
 #include "raw_cdr_type.hpp"
 
 namespace kestrel::dds {
@@ -41,14 +42,7 @@ std::size_t Reader::take(const std::function<void(ReceivedSample&&)>& each) {
       if (info[i].valid_data) {
         ReceivedSample sample{static_cast<detail::RawSerdata*>(data[i])->bytes, info[i].source_timestamp,
                               info[i].publication_handle};
-        // The padding the writer added (the encapsulation options' low bits) is not the message's.
-        if (sample.cdr.size() >= 4) {
-          const std::size_t pad = sample.cdr[3] & 3u;
-          if (pad > 0 && sample.cdr.size() >= 4 + pad) {
-            sample.cdr.resize(sample.cdr.size() - pad);
-            sample.cdr[3] = static_cast<std::uint8_t>(sample.cdr[3] & ~3u);
-          }
-        }
+        strip_cdr_padding(sample.cdr);  // the writer's, not the message's
         ++taken;
         ddsi_serdata_unref(data[i]);
         data[i] = nullptr;

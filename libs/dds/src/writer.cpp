@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "cyclone.hpp"
+#include "kestrel/dds/cdr_padding.hpp"
 #include "raw_cdr_type.hpp"
 
 namespace kestrel::dds {
@@ -64,17 +65,13 @@ Writer::~Writer() {
 void Writer::write(std::span<const std::uint8_t> cdr) {
   if (cdr.size() < 4)
     throw Error(fmt::format("writing '{}': {} bytes hold no CDR encapsulation header", topic_, cdr.size()));
-  // DDS carries whole 4-byte words: pad, and say how much in the encapsulation options' low
-  // bits, as the CDR specification (XTypes 1.3, 7.6.3.1.2) and ROS 2's RMWs do.
-  const std::size_t pad = (4 - cdr.size() % 4) % 4;
-  if (pad == 0) {
+  // DDS carries whole 4-byte words (cdr_padding.hpp).
+  if (cdr.size() % 4 == 0) {
     const detail::RawSample sample{cdr.data(), cdr.size()};
     detail::check(dds_write(writer_, &sample), fmt::format("writing '{}'", topic_));
     return;
   }
-  padded_.assign(cdr.begin(), cdr.end());
-  padded_.resize(cdr.size() + pad, 0);
-  padded_[3] = static_cast<std::uint8_t>((padded_[3] & ~3u) | pad);
+  padded_ = pad_cdr(cdr);
   const detail::RawSample sample{padded_.data(), padded_.size()};
   detail::check(dds_write(writer_, &sample), fmt::format("writing '{}'", topic_));
 }

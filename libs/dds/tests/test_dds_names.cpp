@@ -2,6 +2,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <kestrel/dds/cdr_padding.hpp>
 #include <kestrel/dds/qos.hpp>
 #include <kestrel/dds/ros2_names.hpp>
 #include <kestrel/dds/writer.hpp>
@@ -74,6 +75,21 @@ TEST(DdsMetadata, RoundTripsAndRefusesSeparators) {
   EXPECT_EQ(decode_metadata(encode_metadata(m)), m);
   EXPECT_EQ(decode_metadata("enclave=/;junk;a=b"), (WriterMetadata{{"enclave", "/"}, {"a", "b"}}));
   EXPECT_THAT(error_of([] { encode_metadata({{"a;b", "1"}}); }), HasSubstr("must not hold ';'"));
+}
+
+TEST(DdsPadding, WholeWordsOnTheWireTheMessageBack) {
+  const std::vector<std::uint8_t> odd = {0x00, 0x01, 0x00, 0x00, 7, 8, 9, 10, 11};
+  const auto padded = pad_cdr(odd);
+  EXPECT_EQ(padded, (std::vector<std::uint8_t>{0x00, 0x01, 0x00, 0x03, 7, 8, 9, 10, 11, 0, 0, 0}));
+  auto back = padded;
+  strip_cdr_padding(back);
+  EXPECT_EQ(back, odd);
+  const std::vector<std::uint8_t> whole = {0x00, 0x01, 0x00, 0x00, 1, 2, 3, 4};
+  EXPECT_EQ(pad_cdr(whole), whole);
+  // Options that count more padding than the sample holds are left alone.
+  std::vector<std::uint8_t> short_sample = {0x00, 0x01, 0x00, 0x03, 1};
+  strip_cdr_padding(short_sample);
+  EXPECT_EQ(short_sample.size(), 5u);
 }
 
 }  // namespace

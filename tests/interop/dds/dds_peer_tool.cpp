@@ -7,6 +7,9 @@
 //   dds_peer_tool expect DOMAIN TIMEOUT_S NODE
 //     subscribes to /NODE/state, /detections, /tracks and /truth and checks that the messages are
 //     those idl_publisher.c sends, field by field. Exit 0 once all four were right.
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -19,8 +22,6 @@
 #include <kestrel/messages/vehicle_state.hpp>
 #include <kestrel/ros2/cdr_json.hpp>
 #include <kestrel/ros2/definitions.hpp>
-#include <pcl/point_cloud.h>
-#include <pcl/point_types.h>
 #include <string>
 #include <thread>
 
@@ -85,9 +86,9 @@ std::vector<Envelope> known_messages(const std::string& node) {
   auto truth = std::make_shared<msg::GroundTruth>();
   truth->stamp = stamp;
   truth->objects.push_back({3, {1, 2, 3}, {0.5, -0.1, 4.0}, {0.3, 0, 0}, true});
-  return {envelope<msg::StereoFrame>(frame, node, "frame"), envelope<msg::PointCloud>(cloud, node, "cloud"),
+  return {envelope<msg::StereoFrame>(frame, node, "frame"),  envelope<msg::PointCloud>(cloud, node, "cloud"),
           envelope<msg::VehicleState>(state, node, "state"), envelope<msg::Detections>(detections, node, "detections"),
-          envelope<msg::Tracks>(tracks, node, "tracks"), envelope<msg::GroundTruth>(truth, node, "truth")};
+          envelope<msg::Tracks>(tracks, node, "tracks"),     envelope<msg::GroundTruth>(truth, node, "truth")};
 }
 
 int publish(std::uint32_t domain, double seconds, const std::string& node, const std::string& sent_file) {
@@ -101,7 +102,8 @@ int publish(std::uint32_t domain, double seconds, const std::string& node, const
         const auto& spec = specs.at(m.channel);
         if (spec.derived) continue;
         const ros2::MessageSchema schema(spec.schema, ros2::schema_text(spec.schema));
-        sent << nlohmann::ordered_json{{"topic", spec.topic}, {"message", ros2::cdr_to_json(schema, m.cdr)}}.dump() << "\n";
+        sent << nlohmann::ordered_json{{"topic", spec.topic}, {"message", ros2::cdr_to_json(schema, m.cdr)}}.dump()
+             << "\n";
       }
     }
   }

@@ -14,7 +14,7 @@
 namespace kestrel::dds {
 
 struct ReceivedSample {
-  std::vector<std::uint8_t> cdr;  ///< without the padding the writer added: the message as MCAP holds it
+  std::vector<std::uint8_t> cdr;    ///< without the padding the writer added: the message as MCAP holds it
   std::int64_t source_time_ns = 0;  ///< when the writer wrote it (its clock)
   std::uint64_t writer = 0;         ///< the writer's instance handle, for writer_metadata()
 };

@@ -27,8 +27,8 @@ class Writer {
   Writer& operator=(const Writer&) = delete;
 
   /// Sends one sample, padded to whole 4-byte words as DDS requires (the encapsulation options
-  /// say how many bytes were added; readers take them off). Throws kestrel::Error when Cyclone refuses it (bytes not starting with
-  /// an encapsulation header, a deleted participant).
+  /// say how many bytes were added; readers take them off). Throws kestrel::Error when Cyclone refuses it (bytes not
+  /// starting with an encapsulation header, a deleted participant).
   void write(std::span<const std::uint8_t> cdr);
   /// Announces new metadata (discovery carries it to the readers).
   void set_metadata(const WriterMetadata& metadata);
