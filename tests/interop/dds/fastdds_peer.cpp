@@ -4,19 +4,6 @@
 // Prints one JSON line per writer discovered in the domain and per sample received on the TOPICs
 // asked for (DDS names, e.g. rt/tracker/tracks); exits 0 with {"ok": true} once every TOPIC gave a
 // sample, 1 after TIMEOUT_S seconds without that, 2 on bad arguments.
-#include <fastdds/dds/core/policy/QosPolicies.hpp>
-#include <fastdds/dds/domain/DomainParticipant.hpp>
-#include <fastdds/dds/domain/DomainParticipantFactory.hpp>
-#include <fastdds/dds/domain/DomainParticipantListener.hpp>
-#include <fastdds/dds/domain/qos/DomainParticipantQos.hpp>
-#include <fastdds/dds/subscriber/DataReader.hpp>
-#include <fastdds/dds/subscriber/DataReaderListener.hpp>
-#include <fastdds/dds/subscriber/SampleInfo.hpp>
-#include <fastdds/dds/subscriber/Subscriber.hpp>
-#include <fastdds/dds/subscriber/qos/DataReaderQos.hpp>
-#include <fastdds/dds/topic/Topic.hpp>
-#include <fastdds/dds/topic/TopicDataType.hpp>
-#include <fastdds/dds/topic/TypeSupport.hpp>
 #include <fastdds/rtps/common/Locator.h>
 #include <fastdds/rtps/common/SerializedPayload.h>
 #include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
@@ -30,6 +17,19 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fastdds/dds/core/policy/QosPolicies.hpp>
+#include <fastdds/dds/domain/DomainParticipant.hpp>
+#include <fastdds/dds/domain/DomainParticipantFactory.hpp>
+#include <fastdds/dds/domain/DomainParticipantListener.hpp>
+#include <fastdds/dds/domain/qos/DomainParticipantQos.hpp>
+#include <fastdds/dds/subscriber/DataReader.hpp>
+#include <fastdds/dds/subscriber/DataReaderListener.hpp>
+#include <fastdds/dds/subscriber/SampleInfo.hpp>
+#include <fastdds/dds/subscriber/Subscriber.hpp>
+#include <fastdds/dds/subscriber/qos/DataReaderQos.hpp>
+#include <fastdds/dds/topic/Topic.hpp>
+#include <fastdds/dds/topic/TopicDataType.hpp>
+#include <fastdds/dds/topic/TypeSupport.hpp>
 #include <functional>
 #include <map>
 #include <memory>
@@ -50,17 +50,34 @@ namespace {
 // listens on: Fast DDS learns of Cyclone only if it sends there itself.
 constexpr std::uint32_t kMaxPeerIndex = 20;
 
-// Not a limit on what is received: the type says it is unbounded, and the reader's payloads grow
-// to each sample's size. Fast DDS uses it as the writer side's maximum and as a hint.
+// The type's maximum serialized size. Not a limit on what the readers here receive: the type says
+// it is unbounded and their payloads are allocated at each sample's size.
 constexpr std::uint32_t kTypeSize = 4u << 20;
 
 std::mutex out_mutex;  // JSON lines come from the discovery and reception threads
+bool out_closed = false;
 
-void print_line(const std::string& line) {
-  std::lock_guard lock(out_mutex);
+void print_locked(const std::string& line) {
   std::fputs(line.c_str(), stdout);
   std::fputc('\n', stdout);
   std::fflush(stdout);  // read line by line by the test scripts
+}
+
+void print_line(const std::string& line) {
+  std::lock_guard lock(out_mutex);
+  if (!out_closed) {
+    print_locked(line);
+  }
+}
+
+// Nothing is printed after this: the verdict stays the last line even if samples keep arriving
+// while the participant is deleted.
+void close_output(const std::string& last_line) {
+  std::lock_guard lock(out_mutex);
+  if (!last_line.empty()) {
+    print_locked(last_line);
+  }
+  out_closed = true;
 }
 
 std::string json_string(const std::string& s) {
@@ -122,7 +139,7 @@ class RawType : public fdds::TopicDataType {
 
   bool getKey(void*, frtps::InstanceHandle_t*, bool) override { return false; }
 
-  // Unbounded, so that a reader's payload pool resizes instead of truncating to m_typeSize.
+  // Unbounded: a bounded type would get fixed payloads of m_typeSize, and larger samples dropped.
   bool is_bounded() const override { return false; }
   bool is_plain() const override { return false; }
 };
@@ -178,8 +195,7 @@ class ReaderListener : public fdds::DataReaderListener {
         std::snprintf(encapsulation + 2 * i, 3, "%02x", sample[i]);
       }
       print_line("{\"topic\": " + json_string(topic_) + ", \"type\": " + json_string(type_) +
-                 ", \"bytes\": " + std::to_string(sample.size()) + ", \"encapsulation\": \"" +
-                 encapsulation + "\"}");
+                 ", \"bytes\": " + std::to_string(sample.size()) + ", \"encapsulation\": \"" + encapsulation + "\"}");
       std::lock_guard lock(state_.mutex);
       state_.received.insert(topic_);
       state_.changed.notify_all();
@@ -259,8 +275,8 @@ int main(int argc, char** argv) {
   const auto qos = loopback_participant_qos(static_cast<std::uint32_t>(domain));
   ParticipantListener participant_listener(state);
   auto* factory = fdds::DomainParticipantFactory::get_instance();
-  fdds::DomainParticipant* participant = factory->create_participant(
-      static_cast<fdds::DomainId_t>(domain), qos, &participant_listener, fdds::StatusMask::none());
+  fdds::DomainParticipant* participant = factory->create_participant(static_cast<fdds::DomainId_t>(domain), qos,
+                                                                     &participant_listener, fdds::StatusMask::none());
   if (participant == nullptr) {
     std::fputs("fastdds_peer: cannot create the DomainParticipant\n", stderr);
     return 1;
@@ -317,8 +333,7 @@ int main(int argc, char** argv) {
         // m_typeSize for every sample of the history.
         reader_qos.endpoint().history_memory_policy = frtps::DYNAMIC_REUSABLE_MEMORY_MODE;
         reader_listeners.push_back(std::make_unique<ReaderListener>(state, topic_name, type_name));
-        if (subscriber->create_datareader(topic, reader_qos, reader_listeners.back().get()) ==
-            nullptr) {
+        if (subscriber->create_datareader(topic, reader_qos, reader_listeners.back().get()) == nullptr) {
           std::fprintf(stderr, "fastdds_peer: cannot create a reader of %s\n", topic_name.c_str());
           failed = true;
           break;
@@ -333,15 +348,14 @@ int main(int argc, char** argv) {
   }
 
   const bool ok = state.done() && !failed;
-  if (ok) {
-    print_line("{\"ok\": true}");
-  } else if (!failed) {
+  close_output(ok ? "{\"ok\": true}" : "");
+  if (!ok && !failed) {
     for (const auto& topic : state.wanted) {
       if (state.discovered.count(topic) == 0) {
         std::fprintf(stderr, "fastdds_peer: %s: no writer discovered\n", topic.c_str());
       } else if (state.received.count(topic) == 0) {
-        std::fprintf(stderr, "fastdds_peer: %s: writer discovered (type %s), no sample received\n",
-                     topic.c_str(), state.discovered[topic].c_str());
+        std::fprintf(stderr, "fastdds_peer: %s: writer discovered (type %s), no sample received\n", topic.c_str(),
+                     state.discovered[topic].c_str());
       }
     }
   }
