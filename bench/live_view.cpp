@@ -10,6 +10,7 @@
 #include <utility>  // before Asio, whose awaitable.hpp uses std::exchange without including it
 // clang-format on
 
+#include <algorithm>
 #include <atomic>
 #include <boost/asio.hpp>
 #include <boost/beast/core.hpp>
@@ -187,6 +188,44 @@ void BM_LiveViewThreeClients(benchmark::State& state) {
 }
 // The argument is the cloud's size in points. 90 frames: three seconds at 30 Hz.
 BENCHMARK(BM_LiveViewThreeClients)->Arg(20000)->Iterations(90)->Unit(benchmark::kMillisecond);
+
+// The latency of one message through the live view to one loopback client, for comparison with
+// DDS (bench/dds_transport.cpp): from encoding to the client holding all of its ROS 2 messages,
+// one at a time at 30 Hz. Argument 0: a 640x480 grey stereo frame (5 messages); 1: detections
+// with their markers (2 messages). Client and server share this process, as DDS's two do not.
+void BM_LiveViewLatency(benchmark::State& state) {
+  foxglove::LiveServerOptions options;
+  options.address = "127.0.0.1";
+  options.port = 0;
+  foxglove::LiveServer server(options);
+  msg::Detections detections;
+  detections.items.push_back({{0.1, -0.2, 5.0}, {0.4, 0.3, 0.2}, 57, 0.9});
+  const Served served = state.range(0) == 0 ? serve(server, noisy_frame(), "/camera/frame")
+                                            : serve(server, detections, "/refine/detections");
+  GreedyClient client(server.port());
+  for (int i = 0; i < 500 && client.subscribed() < served.channel_ids.size(); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));  // the subscriptions reach the server
+
+  std::vector<double> latency_us;
+  std::uint64_t t = 0;
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    const std::uint64_t before = client.messages();
+    const auto encoded = served.encode();
+    for (const auto& m : encoded.messages)
+      server.publish(served.channel_ids[m.channel], t, std::make_shared<const std::vector<std::uint8_t>>(m.cdr));
+    while (client.messages() < before + encoded.messages.size()) std::this_thread::yield();
+    latency_us.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count());
+    t += 33'333'333;
+    std::this_thread::sleep_for(std::chrono::milliseconds(33));
+  }
+  std::sort(latency_us.begin(), latency_us.end());
+  state.counters["p50_us"] = latency_us[latency_us.size() / 2];
+  state.counters["p99_us"] = latency_us[std::min(latency_us.size() - 1, latency_us.size() * 99 / 100)];
+  server.stop();
+}
+BENCHMARK(BM_LiveViewLatency)->Arg(0)->Arg(1)->Iterations(300)->UseRealTime()->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

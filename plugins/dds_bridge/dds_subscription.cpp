@@ -1,5 +1,6 @@
 #include "dds_subscription.hpp"
 
+#include <algorithm>
 #include <kestrel/dds/ros2_names.hpp>
 #include <kestrel/error.hpp>
 
@@ -22,26 +23,40 @@ DdsSubscription::DdsSubscription(const dds::Participant& participant, const dds:
 }
 
 void DdsSubscription::take(Logger& log, const Publish& publish) {
-  for (Input& in : inputs_) {
+  // Everything waiting on every topic, fed in the order it was written: the parts of one message
+  // (a frame's images and camera infos) meet in its decoder as they would from a recording, however
+  // many messages came at once.
+  struct Arrived {
+    std::size_t input;
+    dds::ReceivedSample sample;
+  };
+  std::vector<Arrived> arrived;
+  for (std::size_t i = 0; i < inputs_.size(); ++i) {
+    Input& in = inputs_[i];
     if (!in.matched && in.reader->matched_writers() > 0) in.matched = true;
-    in.reader->take([&](dds::ReceivedSample&& sample) {
-      ++samples_;
-      std::shared_ptr<const void> message;
-      const dds::WriterMetadata metadata = in.reader->writer_metadata(sample.writer);
-      try {
-        message = decoders_[in.port]->feed(in.index, sample.cdr, in.sequence++, metadata);
-      } catch (const std::exception& e) {
-        ++bad_samples_;
-        if (!warned_[in.topic]) {
-          warned_[in.topic] = true;
-          log.warn("dropped a sample of {} that does not decode ({}); later ones are counted", in.topic, e.what());
-        }
-        return;
+    in.reader->take([&](dds::ReceivedSample&& sample) { arrived.push_back({i, std::move(sample)}); });
+  }
+  std::stable_sort(arrived.begin(), arrived.end(), [](const Arrived& a, const Arrived& b) {
+    return a.sample.source_time_ns < b.sample.source_time_ns;
+  });
+  for (Arrived& a : arrived) {
+    Input& in = inputs_[a.input];
+    ++samples_;
+    std::shared_ptr<const void> message;
+    const dds::WriterMetadata metadata = in.reader->writer_metadata(a.sample.writer);
+    try {
+      message = decoders_[in.port]->feed(in.index, a.sample.cdr, in.sequence++, metadata);
+    } catch (const std::exception& e) {
+      ++bad_samples_;
+      if (!warned_[in.topic]) {
+        warned_[in.topic] = true;
+        log.warn("dropped a sample of {} that does not decode ({}); later ones are counted", in.topic, e.what());
       }
-      if (!message) return;
-      ++received_[ports_[in.port].port];
-      publish(in.port, std::move(message), metadata);
-    });
+      continue;
+    }
+    if (!message) continue;
+    ++received_[ports_[in.port].port];
+    publish(in.port, std::move(message), metadata);
   }
 }
 
