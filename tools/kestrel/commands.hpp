@@ -131,6 +131,8 @@ struct DdsArgs {
 };
 int dds_list_command(const DdsArgs& args);
 int dds_echo_command(const DdsArgs& args);
+/// `kestrel dds msg-package DIR`: DIR/kestrel_msgs, a ROS 2 package of kestrel's own message types.
+int dds_msg_package_command(const std::string& dir);
 /// The DDS domain: --domain/--dds-domain, else ROS_DOMAIN_ID (as ROS 2 reads it), else 0. Throws
 /// kestrel::Error for an id out of range or a ROS_DOMAIN_ID that is not a number.
 std::uint32_t dds_domain(std::optional<std::int64_t> given);

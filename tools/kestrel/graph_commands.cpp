@@ -84,8 +84,7 @@ int run_command(const RunArgs& args) {
       return kUsage;
     }
     const nlohmann::json params = {{"domain_id", domain}, {"publish", args.topics.value_or("")}};
-    with_extras.fragments.push_back(
-        {"--dds", "nodes: [{id: dds, type: dds_bridge, params: " + params.dump() + "}]"});
+    with_extras.fragments.push_back({"--dds", "nodes: [{id: dds, type: dds_bridge, params: " + params.dump() + "}]"});
   } else if (args.dds_domain) {
     spdlog::error("--dds-domain goes with --dds");
     return kUsage;

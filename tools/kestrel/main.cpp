@@ -171,8 +171,7 @@ int main(int argc, char** argv) {
   mcap_cat_cmd->add_option("--topic", mcap_cat.topics, "only this topic (repeatable; default: every topic)");
   mcap_cat_cmd->add_option("--limit", mcap_cat.limit, "print at most N messages");
 
-  auto* dds_cmd =
-      app.add_subcommand("dds", "Topics on DDS, as ROS 2 sees them (docs/ros2.md)")->require_subcommand(1);
+  auto* dds_cmd = app.add_subcommand("dds", "Topics on DDS, as ROS 2 sees them (docs/ros2.md)")->require_subcommand(1);
   DdsArgs dds_list;
   auto* dds_list_cmd = dds_cmd->add_subcommand(
       "list", "Discover the ROS 2 topics of a DDS domain: name, type, publishers and subscribers (ros2 topic list -t)");
@@ -188,6 +187,11 @@ int main(int argc, char** argv) {
       ->default_val(10.0);
   dds_echo_cmd->add_option("--count", dds_echo.count, "stop after printing N messages");
   dds_echo_cmd->add_option("--duration", dds_echo.duration_s, "stop after this many seconds");
+
+  std::string msg_package_dir;
+  auto* dds_msg_package_cmd = dds_cmd->add_subcommand(
+      "msg-package", "Write DIR/kestrel_msgs, the ROS 2 package of kestrel's own message types, for a ROS 2 workspace");
+  dds_msg_package_cmd->add_option("dir", msg_package_dir, "the folder it goes in (a workspace's src/)")->required();
 
   auto* devices_cmd = app.add_subcommand(
       "devices", "List V4L2 cameras and serial ports, with their formats, and which look like an oCamS");
@@ -261,6 +265,7 @@ int main(int argc, char** argv) {
   if (*mavlink_listen_cmd) return mavlink_listen_command(mavlink_listen);
   if (*dds_list_cmd) return dds_list_command(dds_list);
   if (*dds_echo_cmd) return dds_echo_command(dds_echo);
+  if (*dds_msg_package_cmd) return dds_msg_package_command(msg_package_dir);
   if (*mavlink_keygen_cmd) return mavlink_keygen_command(keygen_file);
   if (*mavlink_setup_signing_cmd) return mavlink_setup_signing_command(setup_signing);
   return kUsage;

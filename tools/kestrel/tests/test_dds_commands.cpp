@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 
 #include <atomic>
+#include <filesystem>
 #include <future>
 #include <kestrel/dds/reader.hpp>
 #include <kestrel/dds/writer.hpp>
@@ -13,7 +14,9 @@
 #include <thread>
 
 #include "kestrel/testing/dds_loopback.hpp"
+#include "kestrel/testing/read_file.hpp"
 #include "kestrel/testing/run_command.hpp"
+#include "kestrel/testing/scratch_path.hpp"
 
 using namespace kestrel;
 using namespace std::chrono_literals;
@@ -142,6 +145,26 @@ TEST_F(DdsCommands, RunDdsPublishesEveryConnectedOutput) {
   EXPECT_THAT(echo.text, HasSubstr("\"topic\":\"/tracker/tracks\""));
   EXPECT_THAT(list.text, HasSubstr("/hunter/state [nav_msgs/msg/Odometry]"));
   EXPECT_THAT(list.text, HasSubstr("/tf [tf2_msgs/msg/TFMessage]"));
+}
+
+TEST_F(DdsCommands, MsgPackageWritesTheRosTwoPackageOfKestrelsOwnTypes) {
+  const auto dir = kestrel::testing::scratch_path("msg_package");
+  std::filesystem::remove_all(dir);
+  const auto out = run_command(std::string(KESTREL_CLI) + " dds msg-package " + dir.string());
+  ASSERT_EQ(out.status, 0) << out.text;
+  const auto root = dir / "kestrel_msgs";
+  EXPECT_EQ(kestrel::testing::read_file(root / "msg" / "Tracks.msg"),
+            "std_msgs/Header header\nTrack[] tracks\nbool has_selected\nuint64 selected_id\n");
+  EXPECT_EQ(kestrel::testing::read_file(root / "msg" / "Track.msg"),
+            "uint64 id\nint32 age\nint32 hits\nint32 misses\nfloat64[] state\nfloat64[] covariance\n"
+            "geometry_msgs/Point detection\n");
+  const std::string cmake = kestrel::testing::read_file(root / "CMakeLists.txt");
+  EXPECT_THAT(cmake, HasSubstr("\"msg/Detections.msg\""));
+  EXPECT_THAT(cmake, HasSubstr("DEPENDENCIES builtin_interfaces geometry_msgs std_msgs)"));
+  EXPECT_THAT(kestrel::testing::read_file(root / "package.xml"),
+              HasSubstr("<member_of_group>rosidl_interface_packages"));
+  // Never over an existing package.
+  EXPECT_EQ(run_command(std::string(KESTREL_CLI) + " dds msg-package " + dir.string()).status, 2);
 }
 
 TEST_F(DdsCommands, BadDomainsAreUsageErrors) {
