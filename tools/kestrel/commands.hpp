@@ -33,10 +33,10 @@ struct RunArgs : GraphArgs {
   std::string report_dir;
   bool stats = false;
   bool progress = true;
-  std::string record;                 // --record FILE.mcap: a recorder node is added
-  std::optional<std::string> live;    // --live [ADDRESS:]PORT: a foxglove_bridge node is added
-  std::optional<std::string> topics;  // --topics PATTERNS for them
-  bool dds = false;                   // --dds: a dds_bridge node is added
+  std::string record;                      // --record FILE.mcap: a recorder node is added
+  std::optional<std::string> live;         // --live [ADDRESS:]PORT: a foxglove_bridge node is added
+  std::optional<std::string> topics;       // --topics PATTERNS for them
+  bool dds = false;                        // --dds: a dds_bridge node is added
   std::optional<std::int64_t> dds_domain;  // --dds-domain N (else ROS_DOMAIN_ID, else 0)
 };
 
@@ -124,7 +124,7 @@ int mcap_cat_command(const McapCatArgs& args);
 struct DdsArgs {
   std::optional<std::int64_t> domain;  // else ROS_DOMAIN_ID, else 0
   double wait_s = 2.0;                 // list: how long to listen to discovery; echo: for the topic's writer
-  bool json = false;                   // list: JSON lines
+  bool text = false;                   // list: `ros2 topic list -t` lines instead of JSON lines
   std::string topic;                   // echo: the ROS 2 topic
   std::optional<std::uint64_t> count;  // echo: stop after N messages
   std::optional<double> duration_s;    // echo: stop after this long

@@ -77,7 +77,7 @@ int dds_list_command(const DdsArgs& args) {
     for (const auto& [name, t] : topics) {
       std::vector<std::string> types;
       for (const auto& d : t.dds_types) types.push_back(ros_type_or_dds(d));
-      if (args.json) {
+      if (!args.text) {
         nlohmann::ordered_json line;
         line["topic"] = name;
         line["types"] = types;

@@ -174,10 +174,13 @@ int main(int argc, char** argv) {
   auto* dds_cmd = app.add_subcommand("dds", "Topics on DDS, as ROS 2 sees them (docs/ros2.md)")->require_subcommand(1);
   DdsArgs dds_list;
   auto* dds_list_cmd = dds_cmd->add_subcommand(
-      "list", "Discover the ROS 2 topics of a DDS domain: name, type, publishers and subscribers (ros2 topic list -t)");
+      "list",
+      "Discover the ROS 2 topics of a DDS domain: one JSON line per topic with its types, publishers, subscribers and "
+      "QoS");
   dds_list_cmd->add_option("--domain", dds_list.domain, "DDS domain (default: ROS_DOMAIN_ID, else 0)");
   dds_list_cmd->add_option("--wait", dds_list.wait_s, "seconds to listen to discovery (default 2)");
-  dds_list_cmd->add_flag("--json", dds_list.json, "one JSON object per topic instead of text");
+  dds_list_cmd->add_flag("--text", dds_list.text,
+                         "one line per topic, as ros2 topic list -t prints it, instead of JSON lines");
   DdsArgs dds_echo;
   auto* dds_echo_cmd = dds_cmd->add_subcommand(
       "echo", "Print a topic's messages as JSON lines: {\"source_time\": NS, \"topic\": T, \"message\": {...}}");

@@ -61,13 +61,13 @@ TEST_F(DdsCommands, ListShowsRosTwoTopicsWithTheirTypesAndEnds) {
   dds::Writer writer(participant, "rt/hunter/tracks", "kestrel_msgs::msg::dds_::Tracks_", dds::Qos{});
   dds::Reader reader(participant, "rt/hunter/state", "nav_msgs::msg::dds_::Odometry_", dds::Qos{});
   dds::Writer other(participant, "NotRos", "Other", dds::Qos{});
-  const auto out = run_command(cli("dds list --wait 1.5"));
+  const auto out = run_command(cli("dds list --wait 1.5 --text"));
   EXPECT_EQ(out.status, 0) << out.text;
   EXPECT_THAT(out.text, HasSubstr("/hunter/tracks [kestrel_msgs/msg/Tracks] 1 publisher, 0 subscribers"));
   EXPECT_THAT(out.text, HasSubstr("/hunter/state [nav_msgs/msg/Odometry] 0 publishers, 1 subscriber"));
   EXPECT_THAT(out.text, ::testing::Not(HasSubstr("NotRos")));  // not a ROS 2 topic
 
-  const auto json = run_command(cli("dds list --wait 1.5 --json"));
+  const auto json = run_command(cli("dds list --wait 1.5"));
   ASSERT_EQ(json.status, 0) << json.text;
   std::istringstream lines(json.text);
   std::string line;
@@ -138,7 +138,7 @@ TEST_F(DdsCommands, RunDdsPublishesEveryConnectedOutput) {
                        std::to_string(domain_));
   });
   const auto echo = run_command(cli("dds echo /tracker/tracks --count 1 --wait 5"));
-  const auto list = run_command(cli("dds list --wait 1"));
+  const auto list = run_command(cli("dds list --wait 1 --text"));
   const auto ran = run.get();
   EXPECT_EQ(ran.status, 0) << ran.text;
   EXPECT_EQ(echo.status, 0) << echo.text;
