@@ -18,20 +18,24 @@ math(EXPR KESTREL_TIMEOUT_LONG "600 * ${_kestrel_timeout_scale}")
 set(KESTREL_TEST_PLUGIN_DIR "${CMAKE_BINARY_DIR}/tests/plugins")
 set(KESTREL_BAD_PLUGIN_DIR "${CMAKE_BINARY_DIR}/tests/bad_plugins")
 
-# kestrel_discover_tests(TARGET [TIMEOUT s] [SERIAL] LABELS label... [SUITE_LABELS "pattern=label,label" ...])
+# kestrel_discover_tests(TARGET [TIMEOUT s] [SERIAL] [RESOURCE_LOCK name] LABELS label... [SUITE_LABELS "pattern=label,label" ...])
 # registers TARGET's tests: those matching a SUITE_LABELS pattern (gtest filter syntax) with
 # that entry's labels, the others with LABELS. Every test is registered exactly once: the last
 # discovery takes the tests that match no pattern. The labels are set by a script CTest runs
 # after the discovered tests are added (gtest_discover_tests passes a list-valued property on
 # as separate words).
 function(kestrel_discover_tests target)
-  cmake_parse_arguments(ARG "SERIAL" "TIMEOUT" "LABELS;SUITE_LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "SERIAL" "TIMEOUT;RESOURCE_LOCK" "LABELS;SUITE_LABELS" ${ARGN})
   if(NOT ARG_TIMEOUT)
     set(ARG_TIMEOUT ${KESTREL_TIMEOUT_UNIT})
   endif()
   set(serial "")
   if(ARG_SERIAL)
     set(serial RUN_SERIAL TRUE)  # alone: a realtime test that needs the machine's cores
+  endif()
+  set(lock "")
+  if(ARG_RESOURCE_LOCK)
+    set(lock RESOURCE_LOCK ${ARG_RESOURCE_LOCK})  # never beside a test that takes the same
   endif()
   set(script "")
   set(patterns "")
@@ -43,7 +47,7 @@ function(kestrel_discover_tests target)
     string(REPLACE "," ";" labels "${labels}")
     math(EXPR group "${group} + 1")
     gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 TEST_FILTER "${pattern}" TEST_LIST ${target}_group${group}
-                         PROPERTIES TIMEOUT ${ARG_TIMEOUT})
+                         PROPERTIES TIMEOUT ${ARG_TIMEOUT} ${lock})
     string(APPEND script "if(${target}_group${group})\n"
            "  set_tests_properties(\${${target}_group${group}} PROPERTIES LABELS \"${labels}\")\n"
            "endif()\n")
@@ -55,7 +59,7 @@ function(kestrel_discover_tests target)
     set(filter "-${filter}")
   endif()
   gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 TEST_FILTER "${filter}" TEST_LIST ${target}_others
-                       PROPERTIES TIMEOUT ${ARG_TIMEOUT} ${serial})
+                       PROPERTIES TIMEOUT ${ARG_TIMEOUT} ${serial} ${lock})
   string(APPEND script "if(${target}_others)\n"
          "  set_tests_properties(\${${target}_others} PROPERTIES LABELS \"${ARG_LABELS}\")\n"
          "endif()\n")
@@ -65,18 +69,19 @@ function(kestrel_discover_tests target)
 endfunction()
 
 # kestrel_add_test(NAME SOURCES file.cpp... [LIBRARIES target...] LABELS label...
-#                  [SUITE_LABELS "pattern=label,..." ...] [TIMEOUT s] [SERIAL]
+#                  [SUITE_LABELS "pattern=label,..." ...] [TIMEOUT s] [SERIAL] [RESOURCE_LOCK name]
 #                  [LOADS target...])
 #
 # A GoogleTest program, registered test by test with CTest. LABELS are the CTest labels of its
 # tests (each plugin's tests carry its folder's name); SERIAL runs them alone (realtime tests that
-# need the cores). LOADS names what the tests load or run at run time without linking it (plugins,
+# need the cores); RESOURCE_LOCK never beside another test holding the same name (`dds`: tests
+# that talk on DDS domains, chosen from the process id, which two tests could share). LOADS names what the tests load or run at run time without linking it (plugins,
 # the CLI, test plugins): they are built first. A target of LOADS that does not exist (a plugin
 # folder deleted) is left out, so that the rest still builds; the tests that need it then fail.
 # Test code is built at -O1 even in Release: it compiles about a third faster, and what the tests
 # spend their time in (the runtime, the plugins, the libraries) keeps its own -O3.
 function(kestrel_add_test name)
-  cmake_parse_arguments(ARG "SERIAL" "TIMEOUT" "SOURCES;LIBRARIES;LABELS;SUITE_LABELS;LOADS" ${ARGN})
+  cmake_parse_arguments(ARG "SERIAL" "TIMEOUT;RESOURCE_LOCK" "SOURCES;LIBRARIES;LABELS;SUITE_LABELS;LOADS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_LIBRARIES} kestrel_test_support GTest::gmock GTest::gtest_main
                                         kestrel_warnings)
@@ -91,6 +96,9 @@ function(kestrel_add_test name)
   endif()
   if(ARG_TIMEOUT)
     list(APPEND options TIMEOUT ${ARG_TIMEOUT})
+  endif()
+  if(ARG_RESOURCE_LOCK)
+    list(APPEND options RESOURCE_LOCK ${ARG_RESOURCE_LOCK})
   endif()
   kestrel_discover_tests(${name} LABELS ${ARG_LABELS} SUITE_LABELS ${ARG_SUITE_LABELS} ${options})
 endfunction()

@@ -12,6 +12,7 @@
 #include <cstring>
 #include <map>
 
+#include "blocked_signals.hpp"
 #include "kestrel/error.hpp"
 #include "output_files.hpp"
 #include "report_metrics.hpp"
@@ -24,33 +25,6 @@ using Clock = std::chrono::steady_clock;
 
 // How long stopped runs get to drain and write their reports before they are killed.
 constexpr auto kGrace = std::chrono::seconds(20);
-
-// While a batch runs, SIGINT, SIGTERM and SIGCHLD are blocked and taken with sigtimedwait: no
-// handler, and no signal lost between checking for one and waiting for the next.
-class BlockedSignals {
- public:
-  BlockedSignals() {
-    sigemptyset(&set_);
-    for (const int s : {SIGINT, SIGTERM, SIGCHLD}) sigaddset(&set_, s);
-    pthread_sigmask(SIG_BLOCK, &set_, &old_);
-    struct sigaction dfl {};
-    dfl.sa_handler = SIG_DFL;
-    sigaction(SIGCHLD, &dfl, &old_chld_);  // an ignored SIGCHLD would reap the runs behind our back
-  }
-  ~BlockedSignals() {
-    sigaction(SIGCHLD, &old_chld_, nullptr);
-    pthread_sigmask(SIG_SETMASK, &old_, nullptr);
-  }
-  BlockedSignals(const BlockedSignals&) = delete;
-  BlockedSignals& operator=(const BlockedSignals&) = delete;
-
-  const sigset_t& set() const { return set_; }
-  const sigset_t& before() const { return old_; }  ///< the mask the runs get
-
- private:
-  sigset_t set_{}, old_{};
-  struct sigaction old_chld_ {};
-};
 
 // Each run gets its own process group, so that a Ctrl-C at the terminal reaches the batch only,
 // which then stops each run once (a run signalled twice quits at once, without its report).
@@ -104,7 +78,7 @@ std::string kestrel_executable() {
 
 std::vector<BatchResult> run_batch(const std::vector<BatchJob>& jobs, int parallel) {
   const std::string exe = kestrel_executable();
-  const BlockedSignals blocked;
+  const BlockedSignals blocked{SIGINT, SIGTERM, SIGCHLD};
   std::vector<BatchResult> results(jobs.size());
   std::map<pid_t, std::size_t> running;
   std::size_t next = 0, done = 0;

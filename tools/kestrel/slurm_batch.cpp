@@ -13,6 +13,7 @@
 #include <sstream>
 #include <thread>
 
+#include "blocked_signals.hpp"
 #include "command_errors.hpp"
 #include "output_files.hpp"
 #include "report_metrics.hpp"
@@ -95,23 +96,6 @@ int pending_signal(const sigset_t& set) {
   return sig > 0 ? sig : 0;
 }
 
-class BlockedStopSignals {
- public:
-  BlockedStopSignals() {
-    sigemptyset(&set_);
-    sigaddset(&set_, SIGINT);
-    sigaddset(&set_, SIGTERM);
-    pthread_sigmask(SIG_BLOCK, &set_, &old_);
-  }
-  ~BlockedStopSignals() { pthread_sigmask(SIG_SETMASK, &old_, nullptr); }
-  BlockedStopSignals(const BlockedStopSignals&) = delete;
-  BlockedStopSignals& operator=(const BlockedStopSignals&) = delete;
-  const sigset_t& set() const { return set_; }
-
- private:
-  sigset_t set_{}, old_{};
-};
-
 nlohmann::json read_json(const std::filesystem::path& file) {
   std::ifstream in(file);
   if (!in) throw CommandError(kUsage, "cannot read " + file.string());
@@ -173,7 +157,7 @@ SlurmJobs submit_to_slurm(const std::filesystem::path& dir, const nlohmann::json
   array_argv.push_back("--wrap=exec '" + exe + "' batch-task '" + dir.string() + "' \"$SLURM_ARRAY_TASK_ID\"");
 
   // Until both are accepted, a Ctrl-C cancels what was submitted: no orphan array.
-  const BlockedStopSignals blocked;
+  const BlockedSignals blocked{SIGINT, SIGTERM};
   SlurmJobs ids;
   ids.array = submit(array_argv);
   if (const int sig = pending_signal(blocked.set())) {
@@ -205,7 +189,7 @@ SlurmJobs submit_to_slurm(const std::filesystem::path& dir, const nlohmann::json
 }
 
 void wait_for_slurm(const std::filesystem::path& dir, const SlurmJobs& ids, std::size_t tasks) {
-  const BlockedStopSignals blocked;
+  const BlockedSignals blocked{SIGINT, SIGTERM};
   std::size_t last_done = static_cast<std::size_t>(-1);
   for (;;) {
     if (const int sig = pending_signal(blocked.set())) {
