@@ -24,6 +24,7 @@
 #include <optional>
 
 #include "fire_decision.hpp"
+#include "motion_axis.hpp"
 #include "target_estimate.hpp"
 
 namespace kestrel::aim {
@@ -67,6 +68,8 @@ struct AimPlannerConfig {
   double net_radius_m = 0.6;
   ShotPrediction shot_prediction = ShotPrediction::constant_velocity;
   double dwell_s = 0.5;
+  double motion_axis_time_s = 0.0;
+  double orbit_step_deg = 30.0;
   double net_flight_time_s = 0.4;
   double net_open_s = 0.3;
   double cooldown_s = 3.0;
@@ -237,6 +240,19 @@ class AimPlannerNode final : public Node {
         .with_unit("s")
         .range(0.0, 60.0)
         .describe("how long the aim must hold before firing");
+    c.param("motion_axis_time_s", &C::motion_axis_time_s)
+        .with_unit("s")
+        .range(0.0, 100.0)
+        .describe(
+            "stand on the target's axis of motion (the principal direction of its horizontal velocity, averaged over "
+            "this long), so that the net sweeps along its path and only its manoeuvre across it counts against the "
+            "net's radius; 0: stand on the line of sight, where the hunter happens to be (the paper's)");
+    c.param("orbit_step_deg", &C::orbit_step_deg)
+        .with_unit("deg")
+        .range(0.0, 180.0)
+        .describe(
+            "with motion_axis_time_s: how far round the target, from the line of sight towards its axis of motion, "
+            "the aim pose stands each frame (the hunter circles at the standoff, the camera on the target)");
     c.param("cooldown_s", &C::cooldown_s).with_unit("s").range(0.0, 3600.0).describe("least time between two shots");
     c.component("guidance", &C::guidance, "guidance", "hold_aim")
         .describe(
@@ -334,12 +350,14 @@ class AimPlannerNode final : public Node {
                                          cfg_.target_switch_probability, cfg_.target_r});
         estimate_since_ = t;
         guidance_->reset();
+        motion_axis_.reset();
       } else {
         estimate_->update(intruder);
       }
       const Eigen::VectorXd x = estimate_->state();
       goal_ = aim_pose(x.head<3>(), hunter->position, geometry::yaw_of(hunter->orientation), cfg_.aim_point_m,
                        cfg_.camera_offset_m);
+      if (cfg_.motion_axis_time_s > 0.0) stand_along_motion(x, dt);
       goal_->position.z() = std::max(goal_->position.z(), cfg_.min_altitude_m);
       goal_velocity_ = x.segment<3>(3);
       last_seen_ = t;
@@ -412,6 +430,7 @@ class AimPlannerNode final : public Node {
                             {"predicted_miss_m", *miss},
                             {"probability", probability ? nlohmann::json(*probability) : nlohmann::json()},
                             {"spread_m", *spread},
+                            {"predicted_time_s", shot->time_s},
                             {"estimate_age_s", t - estimate_since_}};
       if (const auto mu = estimate_->model_probabilities(); !mu.empty()) record["model_probabilities"] = mu;
       shots_.push_back(std::move(record));
@@ -506,6 +525,21 @@ class AimPlannerNode final : public Node {
     return e;
   }
 
+  // The aim pose moved round the target towards its axis of motion (motion_axis.hpp), the heading
+  // still on the target: the camera keeps it in view while the hunter circles.
+  void stand_along_motion(const Eigen::VectorXd& x, double dt) {
+    motion_axis_.update(x.segment<3>(3), dt);
+    const Eigen::Vector2d bearing(std::cos(goal_->yaw), std::sin(goal_->yaw));
+    const auto axis = motion_axis_.axis(bearing);
+    if (!axis) return;
+    const Eigen::Vector2d along = approach_direction(bearing, *axis, cfg_.orbit_step_deg * M_PI / 180.0);
+    Eigen::Vector3d from = x.head<3>();  // a point behind the target along that direction
+    from.head<2>() -= 3.0 * along;
+    const double heading = goal_->yaw;
+    goal_ = aim_pose(x.head<3>(), from, std::atan2(along.y(), along.x()), cfg_.aim_point_m, cfg_.camera_offset_m);
+    goal_->yaw = heading;
+  }
+
   // Back off from where the target was last seen, along the line to the hunter, and face it: from
   // farther away the camera sees more, above and below as well as to the sides.
   AimPose back_off_pose(const msg::VehicleState& hunter) const {
@@ -524,6 +558,7 @@ class AimPlannerNode final : public Node {
   std::shared_ptr<guidance::Guidance> guidance_;
   std::optional<AimReference> reference_;
   FireTrigger fire_{cfg_.capture_radius_m, cfg_.dwell_s, cfg_.cooldown_s};
+  MotionAxis motion_axis_{cfg_.motion_axis_time_s};
   net::NetModel net_{{cfg_.aim_point_m, cfg_.net_flight_time_s, cfg_.capture_radius_m, cfg_.net_open_s}};
   AimPose takeoff_, search_, standoff_;
   Eigen::Vector3d last_target_ = Eigen::Vector3d::Zero();

@@ -211,8 +211,9 @@ class DdsBridgeNode final : public Node {
     const auto it = metadata.find(kClockOriginKey);
     if (it == metadata.end()) return Time(0);
     try {
+      const Time offset(std::stoll(it->second) - *own_origin_ns_);
       restamped_ = true;
-      return Time(std::stoll(it->second) - *own_origin_ns_);
+      return offset;
     } catch (const std::exception&) {
       return Time(0);  // not a number: stamps as sent
     }

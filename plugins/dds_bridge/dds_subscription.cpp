@@ -43,7 +43,16 @@ void DdsSubscription::take(Logger& log, const Publish& publish) {
     Input& in = inputs_[a.input];
     ++samples_;
     std::shared_ptr<const void> message;
-    const dds::WriterMetadata metadata = in.reader->writer_metadata(a.sample.writer);
+    // A writer's metadata is read once: it is fixed for the writer's life (its clock's origin), and
+    // asking the discovery data for it costs a lookup and a copy of its QoS per sample.
+    // (None found, the writer just gone or not yet known: asked again next time.)
+    auto known = writer_metadata_.find(a.sample.writer);
+    if (known == writer_metadata_.end()) {
+      dds::WriterMetadata found = in.reader->writer_metadata(a.sample.writer);
+      if (!found.empty()) known = writer_metadata_.emplace(a.sample.writer, std::move(found)).first;
+    }
+    static const dds::WriterMetadata kNone;
+    const dds::WriterMetadata& metadata = known == writer_metadata_.end() ? kNone : known->second;
     try {
       message = decoders_[in.port]->feed(in.index, a.sample.cdr, in.sequence++, metadata);
     } catch (const std::exception& e) {

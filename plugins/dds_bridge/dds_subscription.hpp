@@ -59,6 +59,7 @@ class DdsSubscription {
   std::map<std::string, std::uint64_t> received_;  // by port
   std::uint64_t samples_ = 0, bad_samples_ = 0;
   std::map<std::string, bool> warned_;
+  std::map<std::uint64_t, dds::WriterMetadata> writer_metadata_;  // by writer instance handle
 };
 
 }  // namespace kestrel::dds_bridge

@@ -1,5 +1,7 @@
 // The `stereo_depth` node: disparity by OpenCV StereoSGBM (or StereoBM), reprojected to a
 // camera-frame point cloud by the paper's equation (1).
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <kestrel/messages/point_cloud.hpp>
 #include <kestrel/messages/stereo_frame.hpp>
@@ -7,6 +9,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <optional>
 
+#include "depth_statistics.hpp"
 #include "foreground_mask.hpp"
 #include "stereo_matching.hpp"
 #include "striped_matcher.hpp"
@@ -212,11 +215,31 @@ class StereoDepth final : public Node {
         ctx.add_artifact("foreground.png", encode_png(foreground),
                          "foreground: what stands in front of its background");
     }
+    const auto sampled = [&](int n) { return static_cast<std::uint64_t>((n + cfg_.pixel_step - 1) / cfg_.pixel_step); };
+    statistics_.add_frame(*cloud.points, sampled(disparity.rows) * sampled(disparity.cols));
     ctx.publish(kCloud, std::move(cloud));
+  }
+
+  void finish(Context& ctx) override {
+    const auto depth = [&](double fraction) {
+      const auto d = statistics_.percentile(fraction);
+      return d ? nlohmann::json(*d) : nlohmann::json();
+    };
+    ctx.set_report_section(
+        ctx.id(),
+        ReportSection()
+            .quantity("frames", statistics_.frames())
+            .quantity("points_per_frame", statistics_.points_per_frame())
+            .quantity("valid_fraction", statistics_.valid_fraction())
+            .quantity("depth_m", nlohmann::json{{"p5", depth(0.05)}, {"p50", depth(0.5)}, {"p95", depth(0.95)}}, "m")
+            .markdown(fmt::format("{} frame(s), {:.0f} points a frame ({:.1f} % of the pixels matched).\n",
+                                  statistics_.frames(), statistics_.points_per_frame(),
+                                  100.0 * statistics_.valid_fraction())));
   }
 
  private:
   Config cfg_;
+  DepthStatistics statistics_{cfg_.min_depth_m, cfg_.max_depth_m};
   int num_disparities_;           // after downscaling
   ForegroundOptions foreground_;  // after downscaling
   std::optional<StripedMatcher> matcher_;

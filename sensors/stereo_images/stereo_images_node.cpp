@@ -1,5 +1,5 @@
 // The `stereo_images` node: recorded stereo from any camera as kestrel StereoFrames. Pairs come
-// from two folders, two numbered patterns or a side-by-side video; the calibration from a ROS
+// from two folders, two numbered patterns, two image files or a side-by-side video; the calibration from a ROS
 // camera_info pair or an OpenCV stereo calibration file. Raw images are rectified with it (the
 // same StereoRectifier the oCamS driver uses), rectified ones pass through. So a public dataset
 // or another stereo camera drives every graph (docs/hardware.md).
@@ -90,8 +90,9 @@ class StereoImagesNode final : public Node {
   static NodeSpec spec() {
     using C = StereoImagesConfig;
     ConfigSpec<C> c;
-    c.param("left", &C::left).describe("folder of left images (in name order), or a pattern: left/%06d.png");
-    c.param("right", &C::right).describe("folder or pattern of the right images, as many as the left");
+    c.param("left", &C::left)
+        .describe("folder of left images (in name order), a pattern (left/%06d.png), or one image file");
+    c.param("right", &C::right).describe("folder, pattern or file of the right images, as many as the left");
     c.param("video", &C::video).describe("a side-by-side video instead: left half, right half");
     c.param("start_index", &C::start_index).at_least(0).describe("patterns: the first image's number");
     c.param("left_info", &C::left_info).describe("ROS camera_info YAML of the left camera");

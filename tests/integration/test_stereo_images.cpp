@@ -228,3 +228,32 @@ TEST(StereoImages, ASideBySideVideoSplitsIntoPairsAndBadSourcesSayWhy) {
                Error);
   EXPECT_THROW(stereo_images::PairSource({"", "", (dir / "missing.avi").string(), 0}), Error);
 }
+
+TEST(StereoImages, TwoImageFilesAreOnePair) {
+  const auto dir = scratch("files");
+  cv::imwrite((dir / "left.png").string(), cv::Mat(8, 8, CV_8UC1, cv::Scalar(10)));
+  cv::imwrite((dir / "right.png").string(), cv::Mat(8, 8, CV_8UC1, cv::Scalar(20)));
+  stereo_images::PairSource one({(dir / "left.png").string(), (dir / "right.png").string(), "", 0});
+  EXPECT_EQ(one.size(), 1u);
+  EXPECT_EQ(one.kind(), "one pair");
+  const auto pair = one.next();
+  ASSERT_TRUE(pair);
+  EXPECT_EQ(pair->first.at<std::uint8_t>(0, 0), 10);
+  EXPECT_EQ(pair->second.at<std::uint8_t>(0, 0), 20);
+  EXPECT_FALSE(one.next());
+  // A file beside a folder, or a file that is not an image, says which.
+  try {
+    stereo_images::PairSource({(dir / "left.png").string(), dir.string(), "", 0});
+    ADD_FAILURE() << "a file and a folder made a source";
+  } catch (const Error& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("two image files"));
+  }
+  std::ofstream(dir / "notes.png") << "not an image";
+  stereo_images::PairSource text({(dir / "notes.png").string(), (dir / "right.png").string(), "", 0});
+  try {
+    (void)text.next();
+    ADD_FAILURE() << "a text file read as an image";
+  } catch (const Error& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("notes.png"));
+  }
+}

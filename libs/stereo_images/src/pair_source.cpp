@@ -102,6 +102,19 @@ PairSource::PairSource(const PairSourceOptions& o) {
     return;
   }
   if (o.left.empty() || o.right.empty()) throw Error("give left and right (folders or patterns), or a video");
+  // Two image files: one pair (a still of a dataset such as Middlebury's).
+  std::error_code ec;
+  const bool left_file = fs::is_regular_file(o.left, ec), right_file = fs::is_regular_file(o.right, ec);
+  if (left_file || right_file) {
+    if (!left_file || !right_file)
+      throw Error("left '" + o.left + "' and right '" + o.right +
+                  "': give two image files, two folders or two patterns");
+    left_files_ = {o.left};
+    right_files_ = {o.right};
+    kind_ = "one pair";
+    size_ = 1;
+    return;
+  }
   if (is_pattern(o.left) != is_pattern(o.right)) throw Error("left and right must both be folders or both patterns");
   if (is_pattern(o.left)) {
     left_files_ = numbered_files(o.left, o.start_index);

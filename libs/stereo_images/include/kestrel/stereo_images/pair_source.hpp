@@ -1,7 +1,7 @@
 #pragma once
 // Where recorded stereo pairs come from: two folders of images (matched by sorted name), two
-// numbered patterns (left/%06d.png), or one side-by-side video (left half, right half), with no
-// graph around them so that tests read them directly.
+// numbered patterns (left/%06d.png), two image files (one pair), or one side-by-side video (left
+// half, right half), with no graph around them so that tests read them directly.
 #include <memory>
 #include <opencv2/core.hpp>
 #include <opencv2/videoio.hpp>
@@ -12,7 +12,7 @@
 namespace kestrel::stereo_images {
 
 struct PairSourceOptions {
-  std::string left, right;  ///< folders, or printf patterns with one integer ("left/%06d.png")
+  std::string left, right;  ///< folders, printf patterns with one integer ("left/%06d.png"), or two files
   std::string video;        ///< or a side-by-side video
   int start_index = 0;      ///< patterns: the first number
 };
@@ -30,7 +30,7 @@ class PairSource {
   /// Pairs in all (folders and patterns; a video's frame count as it reports it).
   std::size_t size() const { return size_; }
   std::size_t position() const { return position_; }
-  /// What the pairs are, for the report: "2 folders", "pattern", "video".
+  /// What the pairs are, for the report: "folders", "pattern", "one pair", "video".
   const std::string& kind() const { return kind_; }
 
  private:
