@@ -15,17 +15,22 @@ void DepthStatistics::add_frame(const pcl::PointCloud<pcl::PointXYZ>& points, st
   ++frames_;
   pixels_ += pixels;
   const double last = static_cast<double>(bins_.size() - 1);
-  for (const auto& p : points) {
-    if (!(p.z > 0.0f)) continue;  // not a depth (NaN or behind the camera)
-    ++points_;
-    const double bin = std::clamp(std::floor((std::log(p.z) - log_min_) / log_step_), 0.0, last);
+  constexpr std::size_t kStride = 16;
+  points_ += points.size();
+  std::size_t i = until_sample_;
+  for (; i < points.size(); i += kStride) {
+    const float z = points[i].z;
+    if (!(z > 0.0f)) continue;  // not a depth (NaN or behind the camera)
+    const double bin = std::clamp(std::floor((std::log(z) - log_min_) / log_step_), 0.0, last);
     ++bins_[static_cast<std::size_t>(bin)];
+    ++binned_;
   }
+  until_sample_ = static_cast<std::uint32_t>(i - points.size());  // carried into the next frame
 }
 
 std::optional<double> DepthStatistics::percentile(double fraction) const {
-  if (points_ == 0) return std::nullopt;
-  const double wanted = std::clamp(fraction, 0.0, 1.0) * static_cast<double>(points_);
+  if (binned_ == 0) return std::nullopt;
+  const double wanted = std::clamp(fraction, 0.0, 1.0) * static_cast<double>(binned_);
   std::uint64_t below = 0;
   for (std::size_t i = 0; i < bins_.size(); ++i) {
     below += bins_[i];

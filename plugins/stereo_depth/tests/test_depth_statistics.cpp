@@ -19,29 +19,35 @@ pcl::PointCloud<pcl::PointXYZ> at_depths(const std::vector<float>& depths) {
 
 TEST(DepthStatistics, PercentilesOfKnownDepthsToAPercent) {
   DepthStatistics s(0.5, 15.0);
-  // 1000 points evenly from 2 to 6 m over two frames of 2000 sampled pixels each.
+  // 32,000 points evenly from 2 to 6 m over two frames of 64,000 sampled pixels each (every 16th
+  // point is binned: 2,000 of them).
   std::vector<float> first, second;
-  for (int i = 0; i < 500; ++i) first.push_back(2.0f + 4.0f * i / 999.0f);
-  for (int i = 500; i < 1000; ++i) second.push_back(2.0f + 4.0f * i / 999.0f);
-  s.add_frame(at_depths(first), 2000);
-  s.add_frame(at_depths(second), 2000);
+  const int n = 32000;
+  for (int i = 0; i < n / 2; ++i) first.push_back(2.0f + 4.0f * i / (n - 1));
+  for (int i = n / 2; i < n; ++i) second.push_back(2.0f + 4.0f * i / (n - 1));
+  s.add_frame(at_depths(first), 64000);
+  s.add_frame(at_depths(second), 64000);
   EXPECT_EQ(s.frames(), 2u);
-  EXPECT_DOUBLE_EQ(s.points_per_frame(), 500.0);
+  EXPECT_DOUBLE_EQ(s.points_per_frame(), 16000.0);
   EXPECT_DOUBLE_EQ(s.valid_fraction(), 0.25);
   EXPECT_NEAR(*s.percentile(0.5), 4.0, 0.01 * 4.0);
   EXPECT_NEAR(*s.percentile(0.05), 2.2, 0.01 * 2.2);
   EXPECT_NEAR(*s.percentile(0.95), 5.8, 0.01 * 5.8);
 }
 
-TEST(DepthStatistics, NoPointsNoPercentileAndNonDepthsAreNotCounted) {
+TEST(DepthStatistics, NoDepthsNoPercentile) {
   DepthStatistics s(0.5, 15.0);
   EXPECT_FALSE(s.percentile(0.5));
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  s.add_frame(at_depths({nan, -1.0f, 0.0f}), 100);
+  std::vector<float> none(16, nan);
+  none[0] = -1.0f;
+  s.add_frame(at_depths(none), 100);  // the one binned (the first) is behind the camera
   EXPECT_FALSE(s.percentile(0.5));
-  EXPECT_DOUBLE_EQ(s.valid_fraction(), 0.0);
-  // Beyond the range: in the end bins, not lost.
-  s.add_frame(at_depths({0.1f, 40.0f, 40.0f}), 100);
+  EXPECT_DOUBLE_EQ(s.valid_fraction(), 0.16);
+  // Beyond the range: in the end bins, not lost (16 of each, so that the binned ones are both).
+  std::vector<float> outside(16, 0.1f);
+  outside.resize(48, 40.0f);
+  s.add_frame(at_depths(outside), 100);
   EXPECT_NEAR(*s.percentile(0.0), 0.5, 0.01);
   EXPECT_NEAR(*s.percentile(1.0), 15.0, 0.01 * 15.0);
 }
