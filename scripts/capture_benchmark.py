@@ -270,7 +270,9 @@ def summarise(out, label, sweep_dirs, bands=None, seed0=1):
                          "time_to_capture_s": c.get("time_to_capture_s"), "aim_rmse_m": c.get("aim_rmse_m"),
                          "fire_count": c.get("fire_count"),
                          "first_seen_range_m": r.get("aim", {}).get("first_seen_range_m"),
-                         "shots": paired_shots(c.get("shots", []), r.get("aim", {}).get("shots", [])),
+                         # each shot's prediction stays in its report (scripts/fit-shot-model reads it there)
+                         "shots": [{k: v for k, v in s.items() if k != "prediction"}
+                                   for s in paired_shots(c.get("shots", []), r.get("aim", {}).get("shots", []))],
                          "net_radius_m": nodes.get("net", {}).get("params", {}).get("radius_m", 0.6),
                          "cause": None if c.get("captured") else failure_cause(r)})
     runs.sort(key=lambda x: x["seed"])

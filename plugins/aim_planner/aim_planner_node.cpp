@@ -37,6 +37,7 @@ struct AimPlannerConfig {
   enum class WhenLost { hold, search, back_off };
   enum class ShotPrediction { constant_velocity, constant_acceleration, model };
   Eigen::Vector3d aim_point_m{0.0, 1.0, 2.0};
+  Eigen::Vector3d net_open_point_m{0.0, 1.0, 2.0};
   Eigen::Vector3d camera_offset_m{0.1, 0.0, 0.0};
   std::string airframe = "firefly";
   double gain_1_s = 1.0;
@@ -66,6 +67,12 @@ struct AimPlannerConfig {
   double fire_latency_s = 0.0;
   double last_net_probability = 0.9;
   double net_radius_m = 0.6;
+  // The shot's error model as scripts/fit-shot-model fitted it to 522 shots of the capture
+  // benchmark's tuning engagements (docs/control.md).
+  double shot_manoeuvre_m_s2 = 0.5;
+  double shot_turn_rate_rad_s = 0.5;
+  double shot_acceleration_share = 0.75;
+  double shot_covariance_scale = 0.25;
   ShotPrediction shot_prediction = ShotPrediction::constant_velocity;
   double dwell_s = 0.5;
   double motion_axis_time_s = 0.0;
@@ -91,7 +98,14 @@ class AimPlannerNode final : public Node {
         .with_unit("m")
         .range(-50.0, 50.0)
         .describe(
-            "x_E^d: where the net opens, in the camera frame (x right, y down, z forward); the paper's [0, 1, 2]");
+            "x_E^d: where the hunter holds the target, in the camera frame (x right, y down, z forward); the paper's "
+            "[0, 1, 2], where its net opens");
+    c.param("net_open_point_m", &C::net_open_point_m)
+        .with_unit("m")
+        .range(-50.0, 50.0)
+        .describe(
+            "where the launcher's net reaches its widest opening, in the camera frame at the launch (net_sim's "
+            "open_point_m), for the predicted shot; it flies on while open, so a target held beyond it is swept");
     c.param("camera_offset_m", &C::camera_offset_m)
         .with_unit("m")
         .range(-10.0, 10.0)
@@ -224,6 +238,26 @@ class AimPlannerNode final : public Node {
         .with_unit("m")
         .range(0.01, 10.0)
         .describe("with fire_probability: the open net's radius (as net_sim has it)");
+    c.param("shot_manoeuvre_m_s2", &C::shot_manoeuvre_m_s2)
+        .with_unit("m/s^2")
+        .range(0.0, 100.0)
+        .describe(
+            "the shot's probability: standard deviation per axis of an acceleration the prediction does not foresee, "
+            "held while the net flies (the target's manoeuvre)");
+    c.param("shot_turn_rate_rad_s", &C::shot_turn_rate_rad_s)
+        .with_unit("rad/s")
+        .range(0.0, 100.0)
+        .describe(
+            "the shot's probability: the unforeseen acceleration grows by this times the target's speed (a turn at "
+            "this rate): a fast target's manoeuvre moves it further");
+    c.param("shot_acceleration_share", &C::shot_acceleration_share)
+        .range(0.0, 1.0)
+        .describe(
+            "the shot's probability: the share of the estimate's acceleration expected to go on while the net flies "
+            "(it moves the predicted path)");
+    c.param("shot_covariance_scale", &C::shot_covariance_scale)
+        .range(0.0, 100.0)
+        .describe("the shot's probability: the estimate's position and velocity covariance is taken this many times");
     c.param("last_net_radius_m", &C::last_net_radius_m)
         .with_unit("m")
         .range(0.01, 10.0)
@@ -328,6 +362,7 @@ class AimPlannerNode final : public Node {
     std::optional<Eigen::Vector3d> error;
     std::optional<double> miss, probability, spread;
     std::optional<PredictedShot> shot;
+    std::optional<ShotUncertainty> uncertainty;
     if (estimate_ && t - last_seen_ > cfg_.target_timeout_s) estimate_.reset();  // too old to predict from
     if (estimate_) estimate_->predict(dt);
     if (target) {
@@ -377,7 +412,12 @@ class AimPlannerNode final : public Node {
       // approach: how far it can be trusted, and the chance the net holds the target.
       const Eigen::Matrix3d ahead = estimate_->position_covariance_after(shot->time_s);
       spread = std::sqrt(std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(ahead).eigenvalues().maxCoeff()));
-      if (cfg_.fire_probability > 0.0) probability = hit_probability(shot->miss, ahead, cfg_.net_radius_m);
+      uncertainty = ShotUncertainty{estimate_->covariance().topLeftCorner<6, 6>(), lead,
+                                    cfg_.shot_acceleration_share * x.segment<3>(6),
+                                    cfg_.shot_manoeuvre_m_s2 + cfg_.shot_turn_rate_rad_s * x.segment<3>(3).norm()};
+      ShotUncertainty scaled = *uncertainty;
+      scaled.position_velocity *= cfg_.shot_covariance_scale;
+      probability = hit_probability(*shot, scaled, cfg_.net_radius_m);
     }
 
     if (goal_ && target) {
@@ -431,7 +471,8 @@ class AimPlannerNode final : public Node {
                             {"probability", probability ? nlohmann::json(*probability) : nlohmann::json()},
                             {"spread_m", *spread},
                             {"predicted_time_s", shot->time_s},
-                            {"estimate_age_s", t - estimate_since_}};
+                            {"estimate_age_s", t - estimate_since_},
+                            {"prediction", prediction_record(*shot, *uncertainty, estimate_->state())}};
       if (const auto mu = estimate_->model_probabilities(); !mu.empty()) record["model_probabilities"] = mu;
       shots_.push_back(std::move(record));
       ctx.publish(kFire, msg::NetFire{tracks->stamp, target->id, *error});
@@ -452,6 +493,25 @@ class AimPlannerNode final : public Node {
     const TargetMotion motion{x.head<3>(), x.segment<3>(3),
                               with_acceleration ? Eigen::Vector3d(x.segment<3>(6)) : Eigen::Vector3d::Zero()};
     return predict_shot(net_, camera, hunter_velocity, [&](double tau) { return motion.at(lead + tau); });
+  }
+
+  // What the shot's probability was computed from, so that its error model can be fitted again
+  // to the shots' outcomes (scripts/fit-shot-model): the predicted miss over the open window
+  // ([tau, x, y, z] rows), the estimate's position-velocity covariance (before
+  // shot_covariance_scale) and its state ([x y z vx vy vz ax ay az], world).
+  static nlohmann::json prediction_record(const PredictedShot& shot, const ShotUncertainty& uncertainty,
+                                          const Eigen::VectorXd& state) {
+    nlohmann::json path = nlohmann::json::array(), covariance = nlohmann::json::array();
+    for (const MissAt& m : shot.path) path.push_back({m.tau_s, m.miss.x(), m.miss.y(), m.miss.z()});
+    for (int i = 0; i < 6; ++i) {
+      nlohmann::json row = nlohmann::json::array();
+      for (int j = 0; j < 6; ++j) row.push_back(uncertainty.position_velocity(i, j));
+      covariance.push_back(std::move(row));
+    }
+    return {{"lead_s", uncertainty.lead_s},
+            {"miss_path_m", std::move(path)},
+            {"position_velocity_covariance", std::move(covariance)},
+            {"estimate", std::vector<double>(state.data(), state.data() + state.size())}};
   }
 
   // The launcher (when connected) fires only when loaded and not reloading.
@@ -559,7 +619,7 @@ class AimPlannerNode final : public Node {
   std::optional<AimReference> reference_;
   FireTrigger fire_{cfg_.capture_radius_m, cfg_.dwell_s, cfg_.cooldown_s};
   MotionAxis motion_axis_{cfg_.motion_axis_time_s};
-  net::NetModel net_{{cfg_.aim_point_m, cfg_.net_flight_time_s, cfg_.capture_radius_m, cfg_.net_open_s}};
+  net::NetModel net_{{cfg_.net_open_point_m, cfg_.net_flight_time_s, cfg_.capture_radius_m, cfg_.net_open_s}};
   AimPose takeoff_, search_, standoff_;
   Eigen::Vector3d last_target_ = Eigen::Vector3d::Zero();
   std::optional<AimPose> goal_;

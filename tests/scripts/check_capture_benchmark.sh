@@ -32,6 +32,10 @@ if times:
 assert caught >= 4, f"only {caught} of 6 caught"
 md = open(os.path.join(out, "capture.md")).read()
 assert "| detection-level camera | 6 |" in md, md
+# The shots' error model, fitted to these runs' shots, with its reliability table.
+shot_model = json.load(open(os.path.join(out, "shots", "shot_model.json")))
+assert shot_model["shots"] == sum(1 for s in doc["per_run"] for x in s["shots"] if x.get("closest_m") is not None)
+assert "## Shot error model" in md and "| predicted probability |" in md, md
 assert "rendered" not in doc
 PY
 

@@ -88,28 +88,102 @@ TEST(PredictedShot, GivesTheTimeAndTheVectorOfTheClosestApproach) {
   EXPECT_TRUE(s.miss.isApprox(beside, 1e-9)) << s.miss.transpose();
 }
 
+namespace {
+// A shot whose predicted miss is `miss` at one instant, half a second after the launch.
+PredictedShot one_instant(const Eigen::Vector3d& miss) { return {0.5, miss, {{0.5, miss}}}; }
+// An uncertainty in position alone, isotropic.
+ShotUncertainty position_spread(double sigma) {
+  ShotUncertainty u;
+  u.position_velocity.topLeftCorner<3, 3>() = sigma * sigma * Eigen::Matrix3d::Identity();
+  return u;
+}
+}  // namespace
+
 // Known answers: a certain target is held exactly when its miss is within the radius; a target
 // centred on the net with an isotropic spread sigma is held with the Maxwell distribution's
 // probability of |z| <= R / sigma (R = sigma: erf(1/sqrt 2) - sqrt(2/pi) e^(-1/2) = 0.1987;
 // R = 2 sigma: 0.7385).
 TEST(HitProbability, IsTheShareOfThePredictedDistributionInsideTheNet) {
-  const Eigen::Matrix3d certain = Eigen::Matrix3d::Zero();
-  EXPECT_EQ(hit_probability({0.5, 0.0, 0.0}, certain, 0.6), 1.0);
-  EXPECT_EQ(hit_probability({0.0, 0.7, 0.0}, certain, 0.6), 0.0);
+  const ShotUncertainty certain;
+  EXPECT_EQ(hit_probability(one_instant({0.5, 0.0, 0.0}), certain, 0.6), 1.0);
+  EXPECT_EQ(hit_probability(one_instant({0.0, 0.7, 0.0}), certain, 0.6), 0.0);
   const double sigma = 0.3;
-  const Eigen::Matrix3d spread = sigma * sigma * Eigen::Matrix3d::Identity();
-  EXPECT_NEAR(hit_probability(Eigen::Vector3d::Zero(), spread, sigma), 0.1987, 0.02);
-  EXPECT_NEAR(hit_probability(Eigen::Vector3d::Zero(), spread, 2.0 * sigma), 0.7385, 0.02);
+  const ShotUncertainty spread = position_spread(sigma);
+  EXPECT_NEAR(hit_probability(one_instant(Eigen::Vector3d::Zero()), spread, sigma), 0.1987, 0.02);
+  EXPECT_NEAR(hit_probability(one_instant(Eigen::Vector3d::Zero()), spread, 2.0 * sigma), 0.7385, 0.02);
   // Further off, less likely; the same answer every time; a broken estimate never fires.
-  EXPECT_LT(hit_probability({0.4, 0.0, 0.0}, spread, 2.0 * sigma),
-            hit_probability({0.1, 0.0, 0.0}, spread, 2.0 * sigma));
-  EXPECT_EQ(hit_probability({0.2, 0.1, 0.0}, spread, 0.6), hit_probability({0.2, 0.1, 0.0}, spread, 0.6));
-  EXPECT_EQ(hit_probability({kNaN, 0.0, 0.0}, spread, 0.6), 0.0);
+  EXPECT_LT(hit_probability(one_instant({0.4, 0.0, 0.0}), spread, 2.0 * sigma),
+            hit_probability(one_instant({0.1, 0.0, 0.0}), spread, 2.0 * sigma));
+  EXPECT_EQ(hit_probability(one_instant({0.2, 0.1, 0.0}), spread, 0.6),
+            hit_probability(one_instant({0.2, 0.1, 0.0}), spread, 0.6));
+  EXPECT_EQ(hit_probability(one_instant({kNaN, 0.0, 0.0}), spread, 0.6), 0.0);
+  ShotUncertainty broken = spread;
+  broken.position_velocity(4, 4) = kNaN;
+  EXPECT_EQ(hit_probability(one_instant({0.1, 0.0, 0.0}), broken, 0.6), 0.0);
+  EXPECT_EQ(hit_probability(PredictedShot{}, spread, 0.6), 0.0);  // no open window
   // Uncertain only across the miss: a spread along z does not move a target that is 0.5 m off in x
   // further than its spread allows.
-  Eigen::Matrix3d flat = Eigen::Matrix3d::Zero();
-  flat(2, 2) = 0.01;
-  EXPECT_GT(hit_probability({0.5, 0.0, 0.0}, flat, 0.6), 0.99);
+  ShotUncertainty flat;
+  flat.position_velocity(2, 2) = 0.01;
+  EXPECT_GT(hit_probability(one_instant({0.5, 0.0, 0.0}), flat, 0.6), 0.99);
+}
+
+// An unknown velocity moves the target by dv s (s from the estimate to the instant): a target off by
+// 0.2 m in x whose velocity is uncertain by 0.5 m/s in y is at s = 0.5 s within 0.6 m of the net
+// when |0.2 + ...| stays inside: |dv_y| <= sqrt(0.6^2 - 0.2^2) / 0.5 = 1.13 m/s, 2.26 sigma:
+// P = 0.976. The lead (estimate to launch) adds to s: at s = 1 s, 0.566 m/s, 1.13 sigma: 0.742.
+TEST(HitProbability, AnUncertainVelocityGrowsWithTheTimeFromTheEstimate) {
+  ShotUncertainty u;
+  u.position_velocity(4, 4) = 0.25;
+  const PredictedShot shot = one_instant({0.2, 0.0, 0.0});
+  EXPECT_NEAR(hit_probability(shot, u, 0.6), 0.976, 0.015);
+  u.lead_s = 0.5;
+  EXPECT_NEAR(hit_probability(shot, u, 0.6), 0.742, 0.03);
+}
+
+// An unforeseen acceleration a moves the target by a s^2 / 2: with sigma_a = 4 m/s^2 and s = 0.5 s,
+// 0.5 m per axis; centred on the net it is held while |z| <= 0.6 / 0.5 = 1.2. Without the
+// manoeuvre it is held for certain.
+TEST(HitProbability, AManoeuvreWhileTheNetFliesSpreadsTheTarget) {
+  ShotUncertainty u;
+  const PredictedShot shot = one_instant(Eigen::Vector3d::Zero());
+  EXPECT_EQ(hit_probability(shot, u, 0.6), 1.0);
+  u.manoeuvre_m_s2 = 4.0;
+  // P(|z| <= 1.2) for a 3-D standard normal: erf(1.2 / sqrt 2) - sqrt(2 / pi) 1.2 e^(-0.72) = 0.304.
+  EXPECT_NEAR(hit_probability(shot, u, 0.6), 0.304, 0.025);
+  // An acceleration expected to go on moves the whole path: 2 m/s^2 by 0.25 m (still held), 8 m/s^2
+  // by 1 m (never).
+  ShotUncertainty expected;
+  expected.acceleration_m_s2 = {2.0, 0.0, 0.0};
+  EXPECT_EQ(hit_probability(shot, expected, 0.6), 1.0);
+  expected.acceleration_m_s2 = {8.0, 0.0, 0.0};
+  EXPECT_EQ(hit_probability(shot, expected, 0.6), 0.0);
+  expected.acceleration_m_s2.x() = kNaN;
+  EXPECT_EQ(hit_probability(shot, expected, 0.6), 0.0);
+}
+
+// The net sweeps its path while open: a target whose uncertain timing only moves it along the
+// path (it crosses the net's path within the window) is caught whatever the timing, while the
+// same miss at the window's edge, the target leaving the net's path, is caught only when early.
+TEST(HitProbability, TheOpenNetSweepsThroughAnEarlyOrLateTarget) {
+  ShotUncertainty u;
+  u.position_velocity(0, 0) = 0.3 * 0.3;  // timing: where along x the target is
+  PredictedShot crossing{0.55, {0.0, 0.3, 0.0}, {}}, leaving{0.4, {0.0, 0.3, 0.0}, {}};
+  for (int i = 0; i <= 30; ++i) {
+    const double tau = 0.4 + 0.01 * i;
+    // Relative to the net the target moves along x at 10 m/s, crossing its path at 0.55 s ...
+    crossing.path.push_back({tau, {10.0 * (tau - 0.55), 0.3, 0.0}});
+    // ... or moves away from it across, along x, from the miss at the opening.
+    leaving.path.push_back({tau, {10.0 * (tau - 0.4), 0.3, 0.0}});
+  }
+  // Held while |x| <= sqrt(0.6^2 - 0.3^2) = 0.52 at some instant. Crossing, x sweeps
+  // [dx - 1.5, dx + 1.5]: held unless |dx| > 2.02 (6.7 sigma). Leaving, x sweeps [dx, dx + 3]:
+  // held when dx <= 0.52 (1.73 sigma, P = 0.958).
+  EXPECT_EQ(hit_probability(crossing, u, 0.6), 1.0);
+  EXPECT_NEAR(hit_probability(leaving, u, 0.6), 0.958, 0.015);
+  u.position_velocity(0, 0) = 1.0;  // 1 m: leaving, dx <= 0.52: P = 0.699; crossing |dx| <= 2.02: 0.957
+  EXPECT_NEAR(hit_probability(leaving, u, 0.6), 0.699, 0.03);
+  EXPECT_NEAR(hit_probability(crossing, u, 0.6), 0.957, 0.015);
 }
 
 // Each estimate follows a target flying straight at 3 m/s and predicts it half a second ahead; the
