@@ -216,8 +216,9 @@ class AimPlannerNode final : public Node {
     c.param("fire_probability", &C::fire_probability)
         .range(0.0, 1.0)
         .describe(
-            "fire when the probability that the open net holds the target (its predicted position's distribution "
-            "against the net's opening) reaches this, instead of the capture_radius_m test; 0: the radius test");
+            "fire when the probability that the open net holds the target (the share of its predicted paths that "
+            "meet the net while open, shot_* parameters) reaches this, instead of the capture_radius_m test; 0: the "
+            "radius test");
     c.param("max_shot_spread_m", &C::max_shot_spread_m)
         .with_unit("m")
         .range(0.0, 100.0)
@@ -237,7 +238,7 @@ class AimPlannerNode final : public Node {
     c.param("net_radius_m", &C::net_radius_m)
         .with_unit("m")
         .range(0.01, 10.0)
-        .describe("with fire_probability: the open net's radius (as net_sim has it)");
+        .describe("the open net's radius (as net_sim has it), for the shot's probability");
     c.param("shot_manoeuvre_m_s2", &C::shot_manoeuvre_m_s2)
         .with_unit("m/s^2")
         .range(0.0, 100.0)
