@@ -413,12 +413,11 @@ class AimPlannerNode final : public Node {
       // approach: how far it can be trusted, and the chance the net holds the target.
       const Eigen::Matrix3d ahead = estimate_->position_covariance_after(shot->time_s);
       spread = std::sqrt(std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(ahead).eigenvalues().maxCoeff()));
-      uncertainty = ShotUncertainty{estimate_->covariance().topLeftCorner<6, 6>(), lead,
+      uncertainty = ShotUncertainty{cfg_.shot_covariance_scale * estimate_->covariance().topLeftCorner<6, 6>(), lead,
                                     cfg_.shot_acceleration_share * x.segment<3>(6),
                                     cfg_.shot_manoeuvre_m_s2 + cfg_.shot_turn_rate_rad_s * x.segment<3>(3).norm()};
-      ShotUncertainty scaled = *uncertainty;
-      scaled.position_velocity *= cfg_.shot_covariance_scale;
-      probability = hit_probability(*shot, scaled, cfg_.net_radius_m);
+      // Every frame only when it decides the shot; otherwise once, for the shot's record.
+      if (cfg_.fire_probability > 0.0) probability = hit_probability(*shot, *uncertainty, cfg_.net_radius_m);
     }
 
     if (goal_ && target) {
@@ -464,6 +463,7 @@ class AimPlannerNode final : public Node {
     if (fire_.decide(t, launcher_ready(ctx, t) && trusted && worth_a_net(ctx, miss, probability))) {
       ++fire_count_;
       if (!first_fire_) first_fire_ = t;
+      if (!probability) probability = hit_probability(*shot, *uncertainty, cfg_.net_radius_m);
       ctx.log().info("fire at t = {:.2f} s: target {}, aim error {:.2f} m, predicted miss {:.2f} m{}", t, target->id,
                      error->norm(), *miss,
                      probability ? fmt::format(", probability {:.2f}", *probability) : std::string());
@@ -473,7 +473,7 @@ class AimPlannerNode final : public Node {
                             {"spread_m", *spread},
                             {"predicted_time_s", shot->time_s},
                             {"estimate_age_s", t - estimate_since_},
-                            {"prediction", prediction_record(*shot, *uncertainty, estimate_->state())}};
+                            {"prediction", prediction_record(*shot, uncertainty->lead_s, *estimate_)}};
       if (const auto mu = estimate_->model_probabilities(); !mu.empty()) record["model_probabilities"] = mu;
       shots_.push_back(std::move(record));
       ctx.publish(kFire, msg::NetFire{tracks->stamp, target->id, *error});
@@ -500,16 +500,17 @@ class AimPlannerNode final : public Node {
   // to the shots' outcomes (scripts/fit-shot-model): the predicted miss over the open window
   // ([tau, x, y, z] rows), the estimate's position-velocity covariance (before
   // shot_covariance_scale) and its state ([x y z vx vy vz ax ay az], world).
-  static nlohmann::json prediction_record(const PredictedShot& shot, const ShotUncertainty& uncertainty,
-                                          const Eigen::VectorXd& state) {
+  static nlohmann::json prediction_record(const PredictedShot& shot, double lead_s, const TargetEstimate& estimate) {
     nlohmann::json path = nlohmann::json::array(), covariance = nlohmann::json::array();
     for (const MissAt& m : shot.path) path.push_back({m.tau_s, m.miss.x(), m.miss.y(), m.miss.z()});
+    const Eigen::MatrixXd p = estimate.covariance();
     for (int i = 0; i < 6; ++i) {
       nlohmann::json row = nlohmann::json::array();
-      for (int j = 0; j < 6; ++j) row.push_back(uncertainty.position_velocity(i, j));
+      for (int j = 0; j < 6; ++j) row.push_back(p(i, j));
       covariance.push_back(std::move(row));
     }
-    return {{"lead_s", uncertainty.lead_s},
+    const Eigen::VectorXd state = estimate.state();
+    return {{"lead_s", lead_s},
             {"miss_path_m", std::move(path)},
             {"position_velocity_covariance", std::move(covariance)},
             {"estimate", std::vector<double>(state.data(), state.data() + state.size())}};
