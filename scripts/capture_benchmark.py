@@ -224,18 +224,6 @@ def paired_shots(launched, ordered):
     return shots
 
 
-def probability_calibration(runs, edges=(0.0, 0.2, 0.4, 0.6, 0.8, 1.0001)):
-    """How often shots fired at each predicted probability caught: per bin, shots and hits (a
-    calibrated probability catches as often as it says)."""
-    bins = []
-    for lo, hi in zip(edges, edges[1:]):
-        shots = [(s, x["net_radius_m"]) for x in runs for s in x.get("shots", [])
-                 if s.get("probability") is not None and s.get("closest_m") is not None and lo <= s["probability"] < hi]
-        bins.append({"probability": f"{lo:.1f}-{min(hi, 1.0):.1f}", "shots": len(shots),
-                     "hits": sum(s["closest_m"] <= radius for s, radius in shots)})
-    return [b for b in bins if b["shots"]]
-
-
 def missed_shots(runs):
     """The shots that missed, by cause: lost to the intruder's manoeuvre while the net flew (it would
     have been caught flying straight on at its velocity at the shot), or to the aim (missed even so)."""
@@ -288,7 +276,6 @@ def summarise(out, label, sweep_dirs, bands=None, seed0=1):
         "first_shot_rate": group_figures(runs)["first_shot_rate"],
         "first_seen_closer_than_4m": group_figures(runs)["first_seen_closer_than_4m"],
         **missed_shots(runs),
-        "probability_calibration": probability_calibration(runs),
         "by_shape": {s: {"runs": sum(x["shape"] == s for x in runs),
                          "captured": sum(x["shape"] == s and x["captured"] for x in runs)}
                      for s in sorted({x["shape"] for x in runs}, key=shape_order)},

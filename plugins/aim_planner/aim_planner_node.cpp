@@ -36,6 +36,7 @@ using guidance::AimReference;
 struct AimPlannerConfig {
   enum class WhenLost { hold, search, back_off };
   enum class ShotPrediction { constant_velocity, constant_acceleration, model };
+  enum class AimTilt { level, target, hunter };
   Eigen::Vector3d aim_point_m{0.0, 1.0, 2.0};
   Eigen::Vector3d net_open_point_m{0.0, 1.0, 2.0};
   Eigen::Vector3d camera_offset_m{0.1, 0.0, 0.0};
@@ -76,6 +77,9 @@ struct AimPlannerConfig {
   ShotPrediction shot_prediction = ShotPrediction::constant_velocity;
   double dwell_s = 0.5;
   double motion_axis_time_s = 0.0;
+  AimTilt aim_tilt = AimTilt::level;
+  double aim_tilt_share = 1.0;
+  double aim_tilt_time_s = 0.5;
   double orbit_step_deg = 30.0;
   double net_flight_time_s = 0.4;
   double net_open_s = 0.3;
@@ -282,6 +286,23 @@ class AimPlannerNode final : public Node {
             "stand on the target's axis of motion (the principal direction of its horizontal velocity, averaged over "
             "this long), so that the net sweeps along its path and only its manoeuvre across it counts against the "
             "net's radius; 0: stand on the line of sight, where the hunter happens to be (the paper's)");
+    c.choice("aim_tilt", &C::aim_tilt,
+             {{"level", C::AimTilt::level}, {"target", C::AimTilt::target}, {"hunter", C::AimTilt::hunter}})
+        .describe(
+            "the camera's attitude the aim pose is computed for (the launcher tilts with it: at 6 m/s^2 of "
+            "acceleration the net would open 1.3 m (forward) or 0.5 m (sideways) off a level pose): level (the "
+            "paper's); tilted as the hunter "
+            "is when it accelerates with aim_tilt_share of the target's estimated acceleration; or tilted as the "
+            "hunter is now");
+    c.param("aim_tilt_share", &C::aim_tilt_share)
+        .range(0.0, 1.0)
+        .describe("aim_tilt target: the share of the target's estimated acceleration the hunter is expected to fly");
+    c.param("aim_tilt_time_s", &C::aim_tilt_time_s)
+        .with_unit("s")
+        .range(0.0, 100.0)
+        .describe(
+            "aim_tilt target: time constant of the low-pass the estimated acceleration goes through first (its "
+            "noise would shake the aim pose by up to 2.3 m times the tilt it makes); 0: none");
     c.param("orbit_step_deg", &C::orbit_step_deg)
         .with_unit("deg")
         .range(0.0, 180.0)
@@ -387,12 +408,15 @@ class AimPlannerNode final : public Node {
         estimate_since_ = t;
         guidance_->reset();
         motion_axis_.reset();
+        tilt_acceleration_.setZero();
       } else {
         estimate_->update(intruder);
       }
       const Eigen::VectorXd x = estimate_->state();
-      goal_ = aim_pose(x.head<3>(), hunter->position, geometry::yaw_of(hunter->orientation), cfg_.aim_point_m,
-                       cfg_.camera_offset_m);
+      const double smoothing = cfg_.aim_tilt_time_s > 0.0 ? dt / (cfg_.aim_tilt_time_s + dt) : 1.0;
+      tilt_acceleration_ += smoothing * (Eigen::Vector3d(x.segment<3>(6)) - tilt_acceleration_);
+      goal_ = aim_pose(x.head<3>(), hunter->position, geometry::yaw_of(hunter->orientation),
+                       guidance::AimGeometry{cfg_.aim_point_m, cfg_.camera_offset_m}, expected_acceleration(*hunter));
       if (cfg_.motion_axis_time_s > 0.0) stand_along_motion(x, dt);
       goal_->position.z() = std::max(goal_->position.z(), cfg_.min_altitude_m);
       goal_velocity_ = x.segment<3>(3);
@@ -516,6 +540,19 @@ class AimPlannerNode final : public Node {
             {"estimate", std::vector<double>(state.data(), state.data() + state.size())}};
   }
 
+  // The hunter's acceleration while it holds the aim (aim_tilt), which tilts its camera: the
+  // target's, which a hunter riding along with it flies; or the one its attitude holds now, the
+  // thrust's horizontal part over its vertical part carrying the weight.
+  Eigen::Vector3d expected_acceleration(const msg::VehicleState& hunter) const {
+    using T = AimPlannerConfig::AimTilt;
+    if (cfg_.aim_tilt == T::target) return cfg_.aim_tilt_share * tilt_acceleration_;
+    if (cfg_.aim_tilt == T::hunter) {
+      const Eigen::Vector3d up = hunter.orientation * Eigen::Vector3d::UnitZ();
+      if (up.z() > 0.1) return guidance::kGravity_m_s2 * Eigen::Vector3d(up.x() / up.z(), up.y() / up.z(), 0.0);
+    }
+    return Eigen::Vector3d::Zero();
+  }
+
   // The launcher (when connected) fires only when loaded and not reloading.
   static bool launcher_ready(Context& ctx, double t) {
     const auto launcher = ctx.get(kLauncher);
@@ -624,6 +661,7 @@ class AimPlannerNode final : public Node {
   net::NetModel net_{{cfg_.net_open_point_m, cfg_.net_flight_time_s, cfg_.capture_radius_m, cfg_.net_open_s}};
   AimPose takeoff_, search_, standoff_;
   Eigen::Vector3d last_target_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d tilt_acceleration_ = Eigen::Vector3d::Zero();  // aim_tilt target: the low-passed estimate
   std::optional<AimPose> goal_;
   std::optional<TargetEstimate> estimate_;
   nlohmann::json shots_ = nlohmann::json::array();  // each shot: when, its predicted miss and probability

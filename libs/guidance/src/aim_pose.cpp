@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <kestrel/geometry/frames.hpp>
+#include <kestrel/vehicle/so3.hpp>
 
 namespace kestrel::guidance {
 
@@ -22,6 +23,20 @@ AimPose aim_pose(const Eigen::Vector3d& intruder_world, const Eigen::Vector3d& h
   const geometry::CameraPose level = geometry::level_camera(Eigen::Vector3d::Zero(), pose.yaw);
   const Eigen::Vector3d camera_wanted = intruder_world - level.world_from_camera() * aim_point_camera;
   pose.position = camera_wanted - level.body_to_world * camera_offset_body;
+  return pose;
+}
+
+AimPose aim_pose(const Eigen::Vector3d& intruder_world, const Eigen::Vector3d& hunter_position, double current_yaw,
+                 const AimGeometry& geometry, const Eigen::Vector3d& acceleration, double gravity_m_s2) {
+  AimPose pose = aim_pose(intruder_world, hunter_position, current_yaw, geometry);
+  const Eigen::Vector3d thrust = acceleration + gravity_m_s2 * Eigen::Vector3d::UnitZ();
+  // Level; or a dive faster than gravity, which no attitude holds.
+  if (acceleration.isZero() || thrust.z() <= 0.1 * gravity_m_s2) return pose;
+  // The heading stays on the intruder; the camera tilts with the thrust.
+  const geometry::CameraPose tilted{Eigen::Vector3d::Zero(),
+                                    Eigen::Quaterniond(vehicle::attitude_along(thrust, pose.yaw))};
+  const Eigen::Vector3d camera_wanted = intruder_world - tilted.world_from_camera() * geometry.aim_point_camera;
+  pose.position = camera_wanted - tilted.body_to_world * geometry.camera_offset_body;
   return pose;
 }
 

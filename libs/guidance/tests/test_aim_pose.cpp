@@ -6,6 +6,7 @@
 #include <kestrel/geometry/frames.hpp>
 #include <kestrel/guidance/aim_pose.hpp>
 #include <kestrel/guidance/aim_reference.hpp>
+#include <kestrel/vehicle/so3.hpp>
 #include <random>
 
 using namespace kestrel;
@@ -36,6 +37,37 @@ TEST(AimLaw, FromTheAimPoseTheIntruderIsAtTheAimPoint) {
     const AimPose p = aim_pose(intruder, hunter, 0.3, kAim, kOffset);
     const auto camera = geometry::camera_on_body(
         p.position, Eigen::Quaterniond(Eigen::AngleAxisd(p.yaw, Eigen::Vector3d::UnitZ())), kOffset);
+    EXPECT_LT((camera.to_camera(intruder) - kAim).norm(), 1e-9) << i;
+  }
+}
+
+TEST(AimLaw, AHunterAcceleratingForwardPitchesDownAndSitsHigher) {
+  // Straight ahead of the camera (no offset): accelerating forward at g, the hunter pitches its
+  // nose 45 degrees down, so it holds the intruder 2 m along that axis: sqrt(2) behind and above.
+  const AimGeometry ahead{{0.0, 0.0, 2.0}, Eigen::Vector3d::Zero()};
+  const AimPose p = aim_pose({5.0, 0.0, 2.0}, {0.0, 0.0, 2.0}, 0.0, ahead, {9.81, 0.0, 0.0});
+  EXPECT_NEAR(p.yaw, 0.0, 1e-12);
+  EXPECT_TRUE(p.position.isApprox(Eigen::Vector3d(5.0 - std::sqrt(2.0), 0.0, 2.0 + std::sqrt(2.0)), 1e-12));
+  // No acceleration is the level pose, bit for bit (the paper graphs keep their figures).
+  const AimPose level = aim_pose({5.0, 0.0, 2.0}, {0.0, 0.0, 2.0}, 0.0, kAim, kOffset);
+  const AimPose zero = aim_pose({5.0, 0.0, 2.0}, {0.0, 0.0, 2.0}, 0.0, AimGeometry{kAim, kOffset}, {0.0, 0.0, 0.0});
+  EXPECT_EQ(zero.position, level.position);
+  EXPECT_EQ(zero.yaw, level.yaw);
+}
+
+TEST(AimLaw, FromTheTiltedAimPoseTheIntruderIsAtTheAimPoint) {
+  // Whatever the acceleration, the camera tilted as the Lee controller tilts the hunter for it
+  // sees the intruder at x_E^d.
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> u(-8.0, 8.0);
+  for (int i = 0; i < 200; ++i) {
+    const double ix = u(random), iy = u(random), iz = u(random);
+    const Eigen::Vector3d intruder(ix, iy, 2.0 + 0.2 * iz);
+    const double ax = u(random), ay = u(random), az = u(random);
+    const Eigen::Vector3d acceleration(ax, ay, 0.5 * az);
+    const AimPose p = aim_pose(intruder, {0.0, 0.0, 2.0}, 0.3, AimGeometry{kAim, kOffset}, acceleration);
+    const Eigen::Matrix3d attitude = vehicle::attitude_along(acceleration + 9.81 * Eigen::Vector3d::UnitZ(), p.yaw);
+    const auto camera = geometry::camera_on_body(p.position, Eigen::Quaterniond(attitude), kOffset);
     EXPECT_LT((camera.to_camera(intruder) - kAim).norm(), 1e-9) << i;
   }
 }
