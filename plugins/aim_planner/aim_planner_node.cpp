@@ -291,9 +291,8 @@ class AimPlannerNode final : public Node {
         .describe(
             "the camera's attitude the aim pose is computed for (the launcher tilts with it: at 6 m/s^2 of "
             "acceleration the net would open 1.3 m (forward) or 0.5 m (sideways) off a level pose): level (the "
-            "paper's); tilted as the hunter "
-            "is when it accelerates with aim_tilt_share of the target's estimated acceleration; or tilted as the "
-            "hunter is now");
+            "paper's); tilted as the hunter is when it accelerates with aim_tilt_share of the target's estimated "
+            "acceleration; or tilted as the hunter is now");
     c.param("aim_tilt_share", &C::aim_tilt_share)
         .range(0.0, 1.0)
         .describe("aim_tilt target: the share of the target's estimated acceleration the hunter is expected to fly");

@@ -12,6 +12,18 @@ double angle_difference(double a, double b) {
   return d;
 }
 
+namespace {
+
+// Where a body with this attitude must be for its camera to see the intruder at the aim point.
+Eigen::Vector3d body_holding(const Eigen::Vector3d& intruder_world, const Eigen::Quaterniond& body_to_world,
+                             const Eigen::Vector3d& aim_point_camera, const Eigen::Vector3d& camera_offset_body) {
+  const geometry::CameraPose camera{Eigen::Vector3d::Zero(), body_to_world};
+  const Eigen::Vector3d camera_wanted = intruder_world - camera.world_from_camera() * aim_point_camera;
+  return camera_wanted - camera.body_to_world * camera_offset_body;
+}
+
+}  // namespace
+
 AimPose aim_pose(const Eigen::Vector3d& intruder_world, const Eigen::Vector3d& hunter_position, double current_yaw,
                  const Eigen::Vector3d& aim_point_camera, const Eigen::Vector3d& camera_offset_body) {
   AimPose pose;
@@ -20,9 +32,8 @@ AimPose aim_pose(const Eigen::Vector3d& intruder_world, const Eigen::Vector3d& h
   const Eigen::Vector2d towards = (intruder_world - camera).head<2>();
   pose.yaw = towards.norm() > 0.05 ? std::atan2(towards.y(), towards.x()) : current_yaw;
   // A level camera with that heading, placed so that the intruder appears at the aim point.
-  const geometry::CameraPose level = geometry::level_camera(Eigen::Vector3d::Zero(), pose.yaw);
-  const Eigen::Vector3d camera_wanted = intruder_world - level.world_from_camera() * aim_point_camera;
-  pose.position = camera_wanted - level.body_to_world * camera_offset_body;
+  pose.position = body_holding(intruder_world, geometry::level_camera(Eigen::Vector3d::Zero(), pose.yaw).body_to_world,
+                               aim_point_camera, camera_offset_body);
   return pose;
 }
 
@@ -33,10 +44,8 @@ AimPose aim_pose(const Eigen::Vector3d& intruder_world, const Eigen::Vector3d& h
   // Level; or a dive faster than gravity, which no attitude holds.
   if (acceleration.isZero() || thrust.z() <= 0.1 * gravity_m_s2) return pose;
   // The heading stays on the intruder; the camera tilts with the thrust.
-  const geometry::CameraPose tilted{Eigen::Vector3d::Zero(),
-                                    Eigen::Quaterniond(vehicle::attitude_along(thrust, pose.yaw))};
-  const Eigen::Vector3d camera_wanted = intruder_world - tilted.world_from_camera() * geometry.aim_point_camera;
-  pose.position = camera_wanted - tilted.body_to_world * geometry.camera_offset_body;
+  pose.position = body_holding(intruder_world, Eigen::Quaterniond(vehicle::attitude_along(thrust, pose.yaw)),
+                               geometry.aim_point_camera, geometry.camera_offset_body);
   return pose;
 }
 
