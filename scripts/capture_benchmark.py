@@ -212,6 +212,13 @@ def group_figures(runs):
             "first_seen_closer_than_4m": sum(r < 4.0 for r in seen) / len(seen) if seen else None}
 
 
+def band_figures(band, runs):
+    """A speed band's entry of `by_band`: its bounds in m/s and the guidance law, then its figures."""
+    laws = sorted({x["guidance"] for x in runs if x.get("guidance")})
+    return {"lo_m_s": band[0], "hi_m_s": band[1], "guidance": ",".join(laws) if laws else None,
+            "band": band_label(band), **group_figures(runs)}
+
+
 def paired_shots(launched, ordered):
     """Each launched shot (the net's log) with the aim's prediction for it (its order's log), paired
     by time: the predicted miss, its spread and probability beside the closest approach."""
@@ -253,7 +260,9 @@ def summarise(out, label, sweep_dirs, bands=None, seed0=1):
             c = r.get("control", {})
             nodes = r["graph"]["resolved"]["nodes"]
             shape = nodes["intruder"]["params"]["shape"]
+            guidance = nodes.get("aim", {}).get("params", {}).get("guidance")
             runs.append({"seed": seed, "shape": shape, "captured": c.get("captured") is True,
+                         "guidance": guidance.get("type") if isinstance(guidance, dict) else guidance,
                          "first_shot_captured": c.get("first_shot_captured") is True,
                          "time_to_capture_s": c.get("time_to_capture_s"), "aim_rmse_m": c.get("aim_rmse_m"),
                          "fire_count": c.get("fire_count"),
@@ -284,8 +293,7 @@ def summarise(out, label, sweep_dirs, bands=None, seed0=1):
     if bands:
         for x in runs:
             x["band"] = band_label(bands[(x["seed"] - seed0) // BAND_SEED_STRIDE])
-        summary["by_band"] = {band_label(b): group_figures([x for x in runs if x["band"] == band_label(b)])
-                              for b in bands}
+        summary["by_band"] = [band_figures(b, [x for x in runs if x["band"] == band_label(b)]) for b in bands]
     os.makedirs(out, exist_ok=True)
     with open(os.path.join(out, "capture.json"), "w") as f:
         json.dump(summary, f, indent=2)
@@ -313,8 +321,8 @@ def markdown(summaries, scenarios_file):
                   "median nets | seen < 4 m | shots | missed: manoeuvre + aim |",
                   "|---|---|---:|---:|---:|---|---:|---:|---:|---:|---:|---|"]
         for s in summaries:
-            for band, b in s.get("by_band", {}).items():
-                lines.append(f"| {s['camera']} | {band} | {b['runs']} | {b['captured']} | {f(b['rate'], '.1%')} | "
+            for b in s.get("by_band", []):
+                lines.append(f"| {s['camera']} | {b['band']} | {b['runs']} | {b['captured']} | {f(b['rate'], '.1%')} | "
                              f"{f(b['wilson_low'], '.1%')} to {f(b['wilson_high'], '.1%')} | "
                              f"{f(b['first_shot_rate'], '.1%')} | {f(b['median_time_to_capture_s'], '.1f')} | "
                              f"{f(b['median_nets_used'], 'g')} | {f(b['first_seen_closer_than_4m'], '.0%')} | "
@@ -330,15 +338,14 @@ def markdown(summaries, scenarios_file):
 
 def write_curve(path, laws):
     """One row per band: its mid speed, and each law's rate with its Wilson bounds."""
-    bands = list(next(iter(laws.values()))["by_band"].keys())
+    bands = [(b["lo_m_s"], b["hi_m_s"]) for b in next(iter(laws.values()))["by_band"]]
     with open(path, "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["band", "speed_m_s"] + [f"{law}{suffix}" for law in laws for suffix in ("", "_low", "_high")])
-        for band in bands:
-            lo, hi = (float(v) for v in band.split(":"))
-            row = [band, (max(lo, 0.5) + hi) / 2.0]
+        for lo, hi in bands:
+            row = [band_label((lo, hi)), (max(lo, 0.5) + hi) / 2.0]
             for summary in laws.values():
-                b = summary["by_band"][band]
+                b = next(x for x in summary["by_band"] if (x["lo_m_s"], x["hi_m_s"]) == (lo, hi))
                 row += [b["rate"], b["wilson_low"], b["wilson_high"]]
             w.writerow(row)
 
@@ -387,6 +394,9 @@ def main(argv):
         if a.law:
             combined["by_guidance"] = {law: json.load(open(path))
                                        for law, _, path in (item.partition("=") for item in a.law)}
+            # One list over every law's bands: the same engagements, told apart by `guidance`.
+            if all("by_band" in s for s in combined["by_guidance"].values()):
+                combined["by_band"] = [b for s in combined["by_guidance"].values() for b in s["by_band"]]
         with open(a.file, "w") as f:
             json.dump(combined, f, indent=2)
     elif a.command == "markdown":

@@ -56,11 +56,17 @@ for c in cases:
         assert (speed >= 6.0) == (int(c["seed"]) > 100000), c
 doc = json.load(open(os.path.join(out, "capture.json")))
 assert set(doc["by_guidance"]) == {"hold_aim", "pn"}, doc.keys()
+# The top-level list holds every law's bands, each entry with its bounds and law.
+assert [(b["guidance"], b["lo_m_s"], b["hi_m_s"]) for b in doc["by_band"]] == \
+    [("hold_aim", 0, 3), ("hold_aim", 6, 10), ("pn", 0, 3), ("pn", 6, 10)], doc["by_band"]
+for b in doc["by_band"]:
+    assert {"runs", "captured", "rate", "wilson_low", "first_shot_rate", "median_time_to_capture_s"} <= b.keys(), b
 for law, summary in doc["by_guidance"].items():
     assert summary["runs"] == 4
-    assert set(summary["by_band"]) == {"0:3", "6:10"}, summary["by_band"]
-    for band, b in summary["by_band"].items():
-        runs = [r for r in summary["per_run"] if r["band"] == band]
+    assert [(b["lo_m_s"], b["hi_m_s"]) for b in summary["by_band"]] == [(0, 3), (6, 10)], summary["by_band"]
+    for b in summary["by_band"]:
+        assert b["guidance"] == law, b
+        runs = [r for r in summary["per_run"] if r["band"] == b["band"]]
         assert b["runs"] == len(runs) == 2
         assert b["captured"] == sum(r["captured"] for r in runs)
         assert b["wilson_low"] <= b["rate"] <= b["wilson_high"], b
