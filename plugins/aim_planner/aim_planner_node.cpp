@@ -21,6 +21,8 @@
 #include <kestrel/tracking/kalman_filter.hpp>
 #include <kestrel/vehicle/airframe.hpp>
 #include <kestrel/vehicle/state_history.hpp>
+#include <kestrel/vehicle/thrust_limit.hpp>
+#include <numbers>
 #include <optional>
 
 #include "fire_decision.hpp"
@@ -44,6 +46,7 @@ struct AimPlannerConfig {
   double gain_1_s = 1.0;
   double max_speed_m_s = 5.0;
   double max_acceleration_m_s2 = 4.0;
+  double max_tilt_deg = 60.0;
   double max_yaw_rate_deg_s = 90.0;
   double takeoff_altitude_m = 2.0;
   double search_advance_m = 0.0;
@@ -128,6 +131,12 @@ class AimPlannerNode final : public Node {
         .with_unit("m/s^2")
         .range(0.1, 100.0)
         .describe("setpoint acceleration limit");
+    c.param("max_tilt_deg", &C::max_tilt_deg)
+        .with_unit("deg")
+        .range(5.0, 85.0)
+        .describe(
+            "setpoint tilt limit: the thrust that flies the setpoint's acceleration (it plus gravity) leans no further "
+            "from vertical, its horizontal part giving way; the aim pose of aim_tilt: target assumes no more");
     c.param("max_yaw_rate_deg_s", &C::max_yaw_rate_deg_s)
         .with_unit("deg/s")
         .range(1.0, 1000.0)
@@ -318,6 +327,8 @@ class AimPlannerNode final : public Node {
     // The aim plans only what the airframe flies.
     c.rule("max_speed_m_s <= the airframe's top speed (firefly 12, interceptor 20 m/s)", {"max_speed_m_s", "airframe"},
            [](const C& k) { return k.max_speed_m_s <= vehicle::airframe(k.airframe).envelope.max_speed_m_s; });
+    c.rule("max_tilt_deg <= the airframe's (60 degrees)", {"max_tilt_deg", "airframe"},
+           [](const C& k) { return k.max_tilt_deg <= vehicle::airframe(k.airframe).envelope.max_tilt_deg; });
     c.rule("max_acceleration_m_s2 <= the airframe's (firefly 8, interceptor 12 m/s^2)",
            {"max_acceleration_m_s2", "airframe"}, [](const C& k) {
              return k.max_acceleration_m_s2 <= vehicle::airframe(k.airframe).envelope.max_acceleration_m_s2;
@@ -544,13 +555,25 @@ class AimPlannerNode final : public Node {
   // thrust's horizontal part over its vertical part carrying the weight.
   Eigen::Vector3d expected_acceleration(const msg::VehicleState& hunter) const {
     using T = AimPlannerConfig::AimTilt;
-    if (cfg_.aim_tilt == T::target) return cfg_.aim_tilt_share * tilt_acceleration_;
+    if (cfg_.aim_tilt == T::target) return flyable(cfg_.aim_tilt_share * tilt_acceleration_);
     if (cfg_.aim_tilt == T::hunter) {
       const Eigen::Vector3d up = hunter.orientation * Eigen::Vector3d::UnitZ();
       if (up.z() > 0.1) return guidance::kGravity_m_s2 * Eigen::Vector3d(up.x() / up.z(), up.y() / up.z(), 0.0);
     }
     return Eigen::Vector3d::Zero();
   }
+
+  // What the hunter flies of an acceleration: its horizontal part within max_acceleration_m_s2,
+  // its thrust within max_tilt_deg, as the aim's reference limits it. A target that turns harder than the hunter can is
+  // aimed at from the tilt the hunter reaches, not from one it never reaches.
+  Eigen::Vector3d flyable(Eigen::Vector3d acceleration) const {
+    const double horizontal = acceleration.head<2>().norm();
+    if (horizontal > cfg_.max_acceleration_m_s2) acceleration.head<2>() *= cfg_.max_acceleration_m_s2 / horizontal;
+    const Eigen::Vector3d up = guidance::kGravity_m_s2 * Eigen::Vector3d::UnitZ();
+    return vehicle::limit_thrust(acceleration + up, 0.1 * guidance::kGravity_m_s2, max_tilt_rad()).thrust - up;
+  }
+
+  double max_tilt_rad() const { return cfg_.max_tilt_deg * std::numbers::pi / 180.0; }
 
   // The launcher (when connected) fires only when loaded and not reloading.
   static bool launcher_ready(Context& ctx, double t) {
@@ -595,7 +618,7 @@ class AimPlannerNode final : public Node {
  private:
   void start(const msg::VehicleState& hunter) {
     AimReference::Limits limits{cfg_.gain_1_s, cfg_.max_speed_m_s, cfg_.max_acceleration_m_s2,
-                                cfg_.max_yaw_rate_deg_s * M_PI / 180.0};
+                                cfg_.max_yaw_rate_deg_s * M_PI / 180.0, max_tilt_rad()};
     reference_.emplace(limits, hunter.position, geometry::yaw_of(hunter.orientation));
     takeoff_.position = hunter.position;
     takeoff_.position.z() = std::max(hunter.position.z(), cfg_.takeoff_altitude_m);

@@ -28,6 +28,7 @@ struct LeeControllerConfig {
   double gravity_m_s2 = 9.81;
   vehicle::MultirotorConfig vehicle;
   OnFault on_fault = OnFault::hover;
+  vehicle::RotorMixer::Priority mixer = vehicle::RotorMixer::Priority::clip;
 };
 
 namespace {
@@ -76,6 +77,12 @@ class LeeControllerNode final : public Node {
         .describe("the desired thrust direction stays within this angle of vertical (60: the airframe's)");
     c.param("gravity_m_s2", &C::gravity_m_s2).with_unit("m/s^2").range(0.0, 100.0).describe("gravity, along -z");
     vehicle::declare_multirotor(c, &C::vehicle);
+    c.choice("mixer", &C::mixer,
+             {{"clip", vehicle::RotorMixer::Priority::clip}, {"attitude", vehicle::RotorMixer::Priority::attitude}})
+        .describe(
+            "when the motors cannot give the wrench: clip each rotor to its range (RotorS's; the thrust stays and the "
+            "attitude overshoots its limit) or keep the attitude (PX4's mixer: the thrust gives way, then yaw, then "
+            "roll and pitch)");
     c.choice("on_fault", &C::on_fault, {{"hover", C::OnFault::hover}, {"cut", C::OnFault::cut}})
         .describe(
             "when the setpoint or the state is not finite: hover (hold the last good setpoint; without a good "
@@ -166,7 +173,8 @@ class LeeControllerNode final : public Node {
 
  private:
   explicit LeeControllerNode(const LeeControllerConfig& cfg)
-      : cfg_(cfg), control_(cfg.vehicle.multirotor(), gains_for(cfg), cfg.gravity_m_s2, tilt_for(cfg) * M_PI / 180.0) {}
+      : cfg_(cfg),
+        control_(cfg.vehicle.multirotor(), gains_for(cfg), cfg.gravity_m_s2, tilt_for(cfg) * M_PI / 180.0, cfg.mixer) {}
 
   // A gain left at its default is the airframe's own; one set to anything else is the user's.
   static LeeGains gains_for(const LeeControllerConfig& cfg) {

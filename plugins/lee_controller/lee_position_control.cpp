@@ -3,32 +3,26 @@
 #include <algorithm>
 #include <cmath>
 #include <kestrel/vehicle/so3.hpp>
+#include <kestrel/vehicle/thrust_limit.hpp>
 
 namespace kestrel::control {
 
-LeePositionControl::LeePositionControl(vehicle::Multirotor vehicle, LeeGains gains, double gravity, double max_tilt_rad)
-    : vehicle_(std::move(vehicle)), gains_(std::move(gains)), gravity_(gravity), max_tilt_rad_(max_tilt_rad) {
-  allocation_inverse_ = vehicle_.allocation_inverse();
-}
+LeePositionControl::LeePositionControl(vehicle::Multirotor vehicle, LeeGains gains, double gravity, double max_tilt_rad,
+                                       vehicle::RotorMixer::Priority mixer)
+    : vehicle_(std::move(vehicle)),
+      gains_(std::move(gains)),
+      gravity_(gravity),
+      max_tilt_rad_(max_tilt_rad),
+      mixer_(vehicle_, mixer) {}
 
 Eigen::Vector3d LeePositionControl::attitude_error(const Eigen::Matrix3d& desired, const Eigen::Matrix3d& actual) {
   return 0.5 * vehicle::vee(desired.transpose() * actual - actual.transpose() * desired);
 }
 
 Eigen::VectorXd LeePositionControl::allocate(const Eigen::Vector3d& torque, double thrust, bool* saturated) const {
-  Eigen::Vector4d wrench;
-  wrench << torque, thrust;
-  const Eigen::VectorXd squared = allocation_inverse_ * wrench;
-  const double max = vehicle_.max_rotor_speed_rad_s;
-  Eigen::VectorXd speeds(squared.size());
-  bool clipped = false;
-  for (Eigen::Index i = 0; i < squared.size(); ++i) {
-    const double s = std::sqrt(std::max(squared(i), 0.0));
-    clipped = clipped || squared(i) < 0.0 || s > max;
-    speeds(i) = std::min(s, max);
-  }
-  if (saturated) *saturated = clipped;
-  return speeds;
+  vehicle::RotorMixer::Mix mix = mixer_.mix(torque, thrust);
+  if (saturated) *saturated = mix.saturated;
+  return std::move(mix.speeds);
 }
 
 LeeCommand LeePositionControl::compute(const msg::TrajectorySetpoint& sp, const msg::VehicleState& state) const {
@@ -43,17 +37,9 @@ LeeCommand LeePositionControl::compute(const msg::TrajectorySetpoint& sp, const 
       -gains_.position.cwiseProduct(ex) - gains_.velocity.cwiseProduct(ev) + m * gravity_ * e3 + m * sp.acceleration;
   // A multirotor cannot pull down, and must not tilt past max_tilt: keep some upward force and
   // shorten the horizontal part.
-  bool limited = false;
-  const double min_up = 0.1 * m * gravity_;
-  if (force.z() < min_up) {
-    force.z() = min_up;
-    limited = true;
-  }
-  const double horizontal = force.head<2>().norm(), max_horizontal = force.z() * std::tan(max_tilt_rad_);
-  if (horizontal > max_horizontal) {
-    force.head<2>() *= max_horizontal / horizontal;
-    limited = true;
-  }
+  const vehicle::LimitedThrust limit = vehicle::limit_thrust(force, 0.1 * m * gravity_, max_tilt_rad_);
+  const bool limited = limit.raised || limit.tilted;
+  force = limit.thrust;
   out.force_world = force;
 
   const Eigen::Matrix3d r = state.orientation.toRotationMatrix();

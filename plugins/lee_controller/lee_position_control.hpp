@@ -10,6 +10,7 @@
 #include <kestrel/messages/trajectory_setpoint.hpp>
 #include <kestrel/messages/vehicle_state.hpp>
 #include <kestrel/vehicle/multirotor.hpp>
+#include <kestrel/vehicle/rotor_mixer.hpp>
 
 namespace kestrel::control {
 
@@ -37,11 +38,13 @@ struct LeeCommand {
 class LeePositionControl {
  public:
   LeePositionControl(vehicle::Multirotor vehicle, LeeGains gains, double gravity = 9.81,
-                     double max_tilt_rad = M_PI / 3.0);
+                     double max_tilt_rad = M_PI / 3.0,
+                     vehicle::RotorMixer::Priority mixer = vehicle::RotorMixer::Priority::clip);
 
   LeeCommand compute(const msg::TrajectorySetpoint& setpoint, const msg::VehicleState& state) const;
 
-  /// Rotor speeds that produce body torques and a collective thrust, clipped to the motors' range.
+  /// Rotor speeds that produce body torques and a collective thrust within the motors' range
+  /// (vehicle::RotorMixer: clipped, or attitude first).
   Eigen::VectorXd allocate(const Eigen::Vector3d& torque, double thrust, bool* saturated = nullptr) const;
 
   /// Lee's attitude error e_R = vee(R_d^T R - R^T R_d) / 2.
@@ -55,7 +58,7 @@ class LeePositionControl {
   LeeGains gains_;
   double gravity_;
   double max_tilt_rad_;
-  Eigen::MatrixXd allocation_inverse_;  ///< rotors x 4: [torque; thrust] to squared rotor speeds
+  vehicle::RotorMixer mixer_;
 };
 
 }  // namespace kestrel::control

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <kestrel/geometry/frames.hpp>
 #include <kestrel/vehicle/so3.hpp>
+#include <kestrel/vehicle/thrust_limit.hpp>
 #include <numbers>
 
 namespace kestrel::sim_autopilot {
@@ -43,12 +44,11 @@ BodyWrench FlightControl::position(const PositionTarget& target, const vehicle::
                                  target.acceleration.value_or(Eigen::Vector3d::Zero());
 
   // Thrust vector, its tilt limited; the vertical part keeps priority.
-  Eigen::Vector3d thrust = vehicle_.mass_kg * (acceleration + Eigen::Vector3d(0.0, 0.0, gravity_));
-  thrust.z() = std::max(thrust.z(), 0.1 * vehicle_.mass_kg * gravity_);
-  const double max_horizontal = thrust.z() * std::tan(gains_.max_tilt_deg * deg);
-  const double horizontal = thrust.head<2>().norm();
-  const bool tilt_limited = horizontal > max_horizontal;
-  if (tilt_limited) thrust.head<2>() *= max_horizontal / horizontal;
+  const vehicle::LimitedThrust limit =
+      vehicle::limit_thrust(vehicle_.mass_kg * (acceleration + Eigen::Vector3d(0.0, 0.0, gravity_)),
+                            0.1 * vehicle_.mass_kg * gravity_, gains_.max_tilt_deg * deg);
+  const Eigen::Vector3d& thrust = limit.thrust;
+  const bool tilt_limited = limit.tilted;
   const bool saturated = thrust.norm() >= max_thrust_n_;
   // Anti-windup: integrate only while the thrust can follow.
   if (!tilt_limited && !saturated) velocity_integral_ += gains_.velocity_i.cwiseProduct(error) * dt;

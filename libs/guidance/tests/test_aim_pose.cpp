@@ -128,3 +128,28 @@ TEST(AimReference, HoldStopsAndSearchTurns) {
   EXPECT_NEAR(r.velocity().norm(), 0.0, 1e-12);  // stopped at 2 m/s^2 within speed / 2 s
   EXPECT_NEAR(r.yaw_rate(), 0.5, 1e-12);
 }
+
+TEST(AimReference, ABrakedClimbWhileSpeedingUpTiltsNoFurtherThanTheLimit) {
+  // Climbing at 5 m/s towards a goal ahead and level: the climb is braked while the hunter speeds
+  // up, 8 m/s^2 in all. Unlimited, the thrust then leans about 50 degrees; limited to 40, the
+  // horizontal part gives way and the braking keeps its share.
+  auto largest_tilt = [](double max_tilt) {
+    AimReference r({1.0, 12.0, 8.0, 1.0, max_tilt}, {0, 0, 2}, 0.0);
+    r.steer({0.0, 0.0, 5.0}, 0.0, 1.0);  // at 5 m/s up, within the 8 m/s^2
+    AimPose goal;
+    goal.position = {30.0, 0.0, 2.0};
+    double tilt = 0.0, first_brake = 0.0;
+    for (int i = 0; i < 100; ++i) {
+      r.advance(goal, Eigen::Vector3d::Zero(), 0.02);
+      const Eigen::Vector3d thrust = r.acceleration() + Eigen::Vector3d(0.0, 0.0, kGravity_m_s2);
+      tilt = std::max(tilt, std::atan2(thrust.head<2>().norm(), thrust.z()));
+      if (i == 0) first_brake = r.acceleration().z();
+    }
+    return std::pair{tilt, first_brake};
+  };
+  const auto [free_tilt, free_brake] = largest_tilt(M_PI / 2.0);
+  const auto [tilt, brake] = largest_tilt(40.0 * M_PI / 180.0);
+  EXPECT_GT(free_tilt, 45.0 * M_PI / 180.0);
+  EXPECT_NEAR(tilt, 40.0 * M_PI / 180.0, 1e-9);
+  EXPECT_DOUBLE_EQ(brake, free_brake);  // the vertical part is not shortened
+}

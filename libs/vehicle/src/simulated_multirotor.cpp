@@ -12,6 +12,7 @@ namespace kestrel::vehicle {
 SimulatedMultirotor::SimulatedMultirotor(const Multirotor& vehicle, const SimulationConfig& config, std::uint64_t seed)
     : dynamics_(vehicle),
       wind_(config.wind_m_s, config.gust_std_m_s, config.gust_time_constant_s, seed),
+      mixer_(vehicle),
       step_(1.0 / config.integration_hz) {
   env_.gravity = config.gravity_m_s2;
   env_.ground_z = config.ground ? config.ground_z_m : -std::numeric_limits<double>::infinity();
@@ -22,7 +23,6 @@ SimulatedMultirotor::SimulatedMultirotor(const Multirotor& vehicle, const Simula
   const auto rotors = static_cast<Eigen::Index>(vehicle.rotors.size());
   state_.rotor_speeds = Eigen::VectorXd::Zero(rotors);
   command_ = Eigen::VectorXd::Zero(rotors);
-  allocation_ = vehicle.allocation_inverse();
   was_on_ground_ = config.ground && state_.position.z() <= config.ground_z_m;
 }
 
@@ -34,10 +34,9 @@ void SimulatedMultirotor::command_rotor_speeds(const Eigen::VectorXd& speeds) {
 }
 
 void SimulatedMultirotor::command_wrench(double thrust_n, const Eigen::Vector3d& torque_nm) {
-  Eigen::Vector4d wrench;
-  wrench << torque_nm, thrust_n;
-  const Eigen::VectorXd speeds = (allocation_ * wrench).cwiseMax(0.0).cwiseSqrt();
-  command_rotor_speeds(speeds);
+  if (!std::isfinite(thrust_n) || !torque_nm.allFinite())
+    throw Error("wrench command holds a thrust or torque that is not a finite number");
+  command_rotor_speeds(mixer_.mix(torque_nm, thrust_n).speeds);
 }
 
 double SimulatedMultirotor::max_thrust_n() const { return dynamics_.vehicle().max_thrust_n(); }

@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <kestrel/geometry/frames.hpp>
 #include <kestrel/vehicle/airframe.hpp>
@@ -44,8 +45,10 @@ struct Flight {
   vehicle::RigidBodyState state;
   vehicle::Environment env;
 
-  explicit Flight(const Eigen::Vector3d& start, const vehicle::Airframe& frame = vehicle::airframe("firefly"))
-      : control(frame.body, gains_of(frame), 9.81, frame.envelope.max_tilt_deg * M_PI / 180.0), dynamics(frame.body) {
+  explicit Flight(const Eigen::Vector3d& start, const vehicle::Airframe& frame = vehicle::airframe("firefly"),
+                  vehicle::RotorMixer::Priority mixer = vehicle::RotorMixer::Priority::clip)
+      : control(frame.body, gains_of(frame), 9.81, frame.envelope.max_tilt_deg * M_PI / 180.0, mixer),
+        dynamics(frame.body) {
     env.ground_z = -std::numeric_limits<double>::infinity();
     state.position = start;
     state.rotor_speeds = Eigen::VectorXd::Constant(static_cast<Eigen::Index>(frame.body.rotors.size()),
@@ -133,6 +136,32 @@ TEST(LeeController, TiltIsLimited) {
   const double tilt = std::acos(cmd.force_world.normalized().z());
   EXPECT_NEAR(tilt, 30.0 * M_PI / 180.0, 1e-9);
   EXPECT_TRUE(cmd.saturated);
+}
+
+// Braking hard from 10 m/s while still leaning forward at the limit: the controller asks for its
+// 60 degree tilt the other way at once, and the swing needs more torque than the rotors have left
+// beside the thrust. Keeping the attitude, the tilt
+// stays near its limit; clipping each rotor, it overshoots far past it.
+TEST(LeeController, BrakingHardTheAttitudeMixerHoldsTheTiltLimitThatClippingOvershoots) {
+  auto largest_tilt_deg = [](vehicle::RotorMixer::Priority mixer) {
+    Flight flight({0, 0, 5}, vehicle::airframe("firefly"), mixer);
+    flight.state.velocity = {10.0, 0.0, 0.0};
+    // still leaning forward at the limit, as it was speeding up: the tilt has to swing across
+    flight.state.orientation = Eigen::AngleAxisd(M_PI / 3.0, Eigen::Vector3d::UnitY());
+    double tilt = 0.0;
+    flight.fly(setpoint_at({0, 0, 5}), 4.0, [&](double) {
+      const double up = (flight.state.orientation * Eigen::Vector3d::UnitZ()).z();
+      tilt = std::max(tilt, std::acos(std::clamp(up, -1.0, 1.0)) * 180.0 / M_PI);
+    });
+    return tilt;
+  };
+  const double kept = largest_tilt_deg(vehicle::RotorMixer::Priority::attitude);
+  const double clipped = largest_tilt_deg(vehicle::RotorMixer::Priority::clip);
+  RecordProperty("tilt_attitude_deg", std::to_string(kept));
+  RecordProperty("tilt_clip_deg", std::to_string(clipped));
+  std::printf("largest tilt: attitude first %.1f deg, clipped %.1f deg\n", kept, clipped);
+  EXPECT_LT(kept, 65.0);
+  EXPECT_GT(clipped, kept + 5.0);
 }
 
 namespace {

@@ -3,6 +3,7 @@
 // hunter's speed and acceleration limits, and turns within its yaw-rate limit. Guidance chooses
 // the velocity; the reference never jumps, so neither does the controller.
 #include <Eigen/Core>
+#include <cmath>
 
 #include "kestrel/guidance/aim_pose.hpp"
 
@@ -15,6 +16,9 @@ class AimReference {
     double max_speed = 3.0;         ///< m/s
     double max_acceleration = 3.0;  ///< m/s^2
     double max_yaw_rate = 1.0;      ///< rad/s
+    /// rad: the thrust that flies the acceleration (it plus gravity) tilts no further from
+    /// vertical; the horizontal part gives way. pi/2: no limit beyond max_acceleration.
+    double max_tilt = M_PI / 2.0;
   };
 
   AimReference(Limits limits, const Eigen::Vector3d& start, double start_yaw);

@@ -11,6 +11,7 @@
 #include <kestrel/node.hpp>
 
 #include "kestrel/vehicle/multirotor_dynamics.hpp"
+#include "kestrel/vehicle/rotor_mixer.hpp"
 #include "kestrel/vehicle/wind.hpp"
 
 namespace kestrel::vehicle {
@@ -70,8 +71,8 @@ class SimulatedMultirotor {
 
   /// Rotor speeds to follow from now on (rad/s). Throws Error for a wrong count or a non-finite speed.
   void command_rotor_speeds(const Eigen::VectorXd& speeds);
-  /// Collective thrust (N, along body z) and body torques (N m), allocated to the rotors by least
-  /// squares, with no rotor asked for negative thrust. Throws Error for a non-finite value.
+  /// Collective thrust (N, along body z) and body torques (N m), allocated to the rotors and
+  /// clipped to their range (RotorMixer). Throws Error for a non-finite value.
   void command_wrench(double thrust_n, const Eigen::Vector3d& torque_nm);
 
   /// Whole RK4 steps up to t_s (seconds of the node's clock); the remainder carries over.
@@ -98,7 +99,7 @@ class SimulatedMultirotor {
   Environment env_;
   RigidBodyState state_;
   Eigen::VectorXd command_;
-  Eigen::MatrixXd allocation_;
+  RotorMixer mixer_;
   double step_;
   double simulated_ = 0.0;
   bool was_on_ground_ = false;
