@@ -564,13 +564,12 @@ class AimPlannerNode final : public Node {
   }
 
   // What the hunter flies of an acceleration: its horizontal part within max_acceleration_m_s2,
-  // its thrust within max_tilt_deg, as the aim's reference limits it. A target that turns harder than the hunter can is
-  // aimed at from the tilt the hunter reaches, not from one it never reaches.
+  // its thrust within max_tilt_deg, as the aim's reference limits it. A target that turns harder
+  // than the hunter can is aimed at from the tilt the hunter reaches, not one it never reaches.
   Eigen::Vector3d flyable(Eigen::Vector3d acceleration) const {
     const double horizontal = acceleration.head<2>().norm();
     if (horizontal > cfg_.max_acceleration_m_s2) acceleration.head<2>() *= cfg_.max_acceleration_m_s2 / horizontal;
-    const Eigen::Vector3d up = guidance::kGravity_m_s2 * Eigen::Vector3d::UnitZ();
-    return vehicle::limit_thrust(acceleration + up, 0.1 * guidance::kGravity_m_s2, max_tilt_rad()).thrust - up;
+    return vehicle::tilt_limited_acceleration(acceleration, max_tilt_rad(), guidance::kGravity_m_s2);
   }
 
   double max_tilt_rad() const { return cfg_.max_tilt_deg * std::numbers::pi / 180.0; }

@@ -16,10 +16,8 @@ void AimReference::move(const Eigen::Vector3d& wanted_velocity, double dt) {
   const double max_dv = limits_.max_acceleration * dt;
   if (dv.norm() > max_dv) dv *= max_dv / dv.norm();
   // A climb braked while the hunter speeds up tilts it most: the thrust is then short and leaning.
-  if (dt > 0.0 && limits_.max_tilt < M_PI / 2.0) {
-    const Eigen::Vector3d up = kGravity_m_s2 * Eigen::Vector3d::UnitZ();
-    dv = (vehicle::limit_thrust(dv / dt + up, 0.1 * kGravity_m_s2, limits_.max_tilt).thrust - up) * dt;
-  }
+  if (dt > 0.0 && limits_.max_tilt < M_PI / 2.0)
+    dv = vehicle::tilt_limited_acceleration(dv / dt, limits_.max_tilt, kGravity_m_s2) * dt;
   acceleration_ = dt > 0.0 ? Eigen::Vector3d(dv / dt) : Eigen::Vector3d::Zero();
   position_ += (velocity_ + 0.5 * dv) * dt;  // exact for a constant acceleration over dt
   velocity_ += dv;

@@ -32,4 +32,12 @@ inline LimitedThrust limit_thrust(Eigen::Vector3d thrust, double min_up, double 
   return out;
 }
 
+/// What a multirotor flies of `acceleration` (world, z up) within `max_tilt_rad`: its thrust per
+/// unit mass (the acceleration plus gravity) limited as above, with a tenth of gravity upward at least.
+inline Eigen::Vector3d tilt_limited_acceleration(const Eigen::Vector3d& acceleration, double max_tilt_rad,
+                                                 double gravity_m_s2) {
+  const Eigen::Vector3d up(0.0, 0.0, gravity_m_s2);
+  return limit_thrust(acceleration + up, 0.1 * gravity_m_s2, max_tilt_rad).thrust - up;
+}
+
 }  // namespace kestrel::vehicle
