@@ -81,87 +81,99 @@ namespace {
 // The background's resolution: columns of the map the openings run on, at most.
 constexpr int kBackgroundWidth = 320;
 
-// Openings of `disparity` down its columns at radii 1, 2, 4, ... up to what a pixel of the largest
-// disparity needs, and the radius each disparity needs: an object of size S (along the columns)
-// at disparity d spans S * d * pixels_per_metre_at_unit_disparity pixels, and a window of 2r + 1
-// pixels fits in it no more once 2r + 1 exceeds that.
-struct Openings {
-  double pixels_per_disparity = 0.0;  // per metre of object size, times the size
-  std::vector<int> radii;
-  std::vector<cv::Mat> images;
-
-  Openings(const cv::Mat& disparity, double max_disparity, double pixels_per_disparity_)
-      : pixels_per_disparity(pixels_per_disparity_) {
-    const int largest = std::min(radius_for(max_disparity), disparity.rows);
-    for (int r = 1;; r *= 2) {
-      radii.push_back(std::min(r, largest));
-      images.push_back(vertical_dilate(vertical_erode(disparity, radii.back()), radii.back()));
-      if (r >= largest) break;
-    }
-  }
-  int radius_for(double d) const { return static_cast<int>(std::floor(pixels_per_disparity * d / 2.0)) + 1; }
-  // The opening at (row, col) with the smallest window tall enough for disparity d.
-  float at(int row, int col, float d) const {
-    const int need = radius_for(d);
-    std::size_t scale = 0;
-    while (scale + 1 < radii.size() && radii[scale] < need) ++scale;
-    return images[scale].at<float>(row, col);
-  }
-};
-
 }  // namespace
 
-cv::Mat foreground_mask(const cv::Mat& disparity16, const msg::StereoCalibration& c, const ForegroundOptions& o) {
+DisparityBackground::Openings::Openings(const cv::Mat& disparity, double max_disparity, double pixels_per_disparity_)
+    : pixels_per_disparity(pixels_per_disparity_) {
+  const int largest = std::min(radius_for(max_disparity), disparity.rows);
+  for (int r = 1;; r *= 2) {
+    radii.push_back(std::min(r, largest));
+    images.push_back(vertical_dilate(vertical_erode(disparity, radii.back()), radii.back()));
+    if (r >= largest) break;
+  }
+}
+
+int DisparityBackground::Openings::radius_for(double d) const {
+  return static_cast<int>(std::floor(pixels_per_disparity * d / 2.0)) + 1;
+}
+
+float DisparityBackground::Openings::at(int row, int col, float d) const {
+  const int need = radius_for(d);
+  std::size_t scale = 0;
+  while (scale + 1 < radii.size() && radii[scale] < need) ++scale;
+  return images[scale].at<float>(row, col);
+}
+
+cv::Mat disparity_unmatched_far(const cv::Mat& disparity16) {
   CV_Assert(disparity16.type() == CV_16S);
   cv::Mat disparity;
   disparity16.convertTo(disparity, CV_32F, 1.0 / 16.0);
   disparity.setTo(0.0f, disparity16 <= 0);  // no match (sky): as far as can be
+  return disparity;
+}
+
+DisparityBackground::DisparityBackground(const cv::Mat& disparity, const msg::StereoCalibration& c,
+                                         const ForegroundOptions& o)
+    : first_(std::clamp(o.unseen_left_columns, 0, disparity.cols)), cols_(disparity.cols) {
+  CV_Assert(disparity.type() == CV_32F);
+  if (first_ == cols_) return;
   double max_disparity = 0.0;
   cv::minMaxLoc(disparity, nullptr, &max_disparity);
-
   // The columns on the left that the right camera does not see hold no match at all: they are
   // outside the picture, not a view of the sky.
-  const int first = std::clamp(o.unseen_left_columns, 0, disparity.cols);
-  if (first == disparity.cols) return cv::Mat(disparity.size(), CV_8U, cv::Scalar(0));
-  const cv::Mat seen = disparity.colRange(first, disparity.cols);
+  const cv::Mat seen = disparity.colRange(first_, disparity.cols);
   // What the openings see: the map subsampled to at most kBackgroundWidth columns (the
   // background needs no finer detail, and the openings cost a quarter at half resolution), short
   // holes filled down the columns, then along the rows.
-  const int k = (seen.cols + kBackgroundWidth - 1) / kBackgroundWidth;
+  k_ = (seen.cols + kBackgroundWidth - 1) / kBackgroundWidth;
   cv::Mat background;
-  cv::resize(seen, background, cv::Size((seen.cols + k - 1) / k, (seen.rows + k - 1) / k), 0, 0, cv::INTER_NEAREST);
+  cv::resize(seen, background, cv::Size((seen.cols + k_ - 1) / k_, (seen.rows + k_ - 1) / k_), 0, 0, cv::INTER_NEAREST);
   if (o.max_hole_px > 0) {
-    const int hole = std::max(1, o.max_hole_px / k);
+    const int hole = std::max(1, o.max_hole_px / k_);
     fill_short_holes_down(background, hole);
     cv::Mat across = background.t();
     fill_short_holes_down(across, hole);
     background = across.t();
   }
-
   // Rows: an object H tall at disparity d spans H * fy / Z = H * d * fy / (fx * b) rows; columns:
   // W * d / b; k times fewer in the subsampled map. Columns are opened as the rows of the
   // transposed map.
-  const Openings down(background, max_disparity, o.max_height_m * c.fy / (c.fx * c.baseline_m) / k);
-  const Openings across(background.t(), max_disparity, o.max_width_m / c.baseline_m / k);
+  down_.emplace(background, max_disparity, o.max_height_m * c.fy / (c.fx * c.baseline_m) / k_);
+  across_.emplace(background.t(), max_disparity, o.max_width_m / c.baseline_m / k_);
+}
 
+float DisparityBackground::behind(int row, int col, float d) const {
+  const int u = (col - first_) / k_, v = row / k_;
+  return std::max(down_->at(v, u, d), across_->at(u, v, d));
+}
+
+double standing_out_threshold(double d, double focal_baseline, const ForegroundOptions& o) {
   // Standing gap_m in front of a background at depth Z + gap: d - fb / (fb / d + gap).
+  return std::max(o.gap_m * d * d / (focal_baseline + o.gap_m * d), o.min_step_px);
+}
+
+cv::Mat foreground_mask(const cv::Mat& disparity16, const msg::StereoCalibration& c, const ForegroundOptions& o) {
+  const cv::Mat disparity = disparity_unmatched_far(disparity16);
+  const DisparityBackground background(disparity, c, o);
   const double fb = c.fx * c.baseline_m;
   cv::Mat mask(disparity.size(), CV_8U, cv::Scalar(0));
   for (int v = 0; v < disparity.rows; ++v) {
     const float* d = disparity.ptr<float>(v);
     std::uint8_t* m = mask.ptr<std::uint8_t>(v);
-    for (int u = first; u < disparity.cols; ++u) {
-      if (d[u] <= 0.0f) continue;
-      const double threshold = std::max(o.gap_m * d[u] * d[u] / (fb + o.gap_m * d[u]), o.min_step_px);
+    for (int u = 0; u < disparity.cols; ++u) {
+      if (d[u] <= 0.0f || !background.sees(u)) continue;
       // In front of what is above and below it, and of what is left and right of it.
-      const int col = (u - first) / k, row = v / k;
-      if (d[u] - down.at(row, col, d[u]) >= threshold && d[u] - across.at(col, row, d[u]) >= threshold) m[u] = 255;
+      if (d[u] - background.behind(v, u, d[u]) >= standing_out_threshold(d[u], fb, o)) m[u] = 255;
     }
   }
-  if (o.min_thickness_px > 1)
-    cv::morphologyEx(mask, mask, cv::MORPH_OPEN,
-                     cv::getStructuringElement(cv::MORPH_RECT, {o.min_thickness_px, o.min_thickness_px}));
+  open_thin_parts(mask, o.min_thickness_px);
   return mask;
+}
+
+void open_thin_parts(cv::Mat& mask, int min_thickness_px) {
+  if (min_thickness_px > 1)
+    cv::morphologyEx(mask, mask, cv::MORPH_OPEN,
+                     cv::getStructuringElement(cv::MORPH_RECT, {min_thickness_px, min_thickness_px}));
 }
 
 }  // namespace kestrel::stereo

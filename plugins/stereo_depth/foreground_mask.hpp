@@ -10,6 +10,8 @@
 // would merge with it. The background is found on the map subsampled to 320 columns or fewer;
 // each pixel is then judged at full resolution against it.
 #include <opencv2/core.hpp>
+#include <optional>
+#include <vector>
 
 #include "kestrel/messages/stereo_frame.hpp"
 #include "stereo_matching.hpp"
@@ -41,6 +43,48 @@ ForegroundOptions options_for_downscale(ForegroundOptions options, int factor, c
 /// trees go, a solid object's body stays.
 cv::Mat foreground_mask(const cv::Mat& disparity16, const msg::StereoCalibration& calibration,
                         const ForegroundOptions& options);
+
+/// A CV_16S disparity map (1/16 px) as CV_32F pixels, no match (<= 0) as 0: infinitely far.
+cv::Mat disparity_unmatched_far(const cv::Mat& disparity16);
+
+/// The background of a disparity map (CV_32F pixels, 0 = no match): for each pixel, and for the
+/// disparity an object there would have, the larger of the two openings (down the column and along
+/// the row) whose windows are longer than such an object. foreground_mask judges the map's own
+/// pixels against it; coarse-to-fine matching judges full-resolution pixels against the background
+/// of the coarse map.
+class DisparityBackground {
+ public:
+  DisparityBackground(const cv::Mat& disparity, const msg::StereoCalibration& calibration,
+                      const ForegroundOptions& options);
+  /// False for the unseen columns on the left (outside the picture).
+  bool sees(int col) const { return col >= first_ && col < cols_; }
+  /// The background's disparity behind pixel (row, col) of the map for an object of disparity d
+  /// there; `col` must be seen.
+  float behind(int row, int col, float d) const;
+
+ private:
+  // Openings down the columns of a map at radii 1, 2, 4, ... up to what a pixel of the largest
+  // disparity needs: an object of size S at disparity d spans S * d * pixels_per_disparity / S
+  // pixels, and a window of 2r + 1 pixels fits in it no more once 2r + 1 exceeds that.
+  struct Openings {
+    double pixels_per_disparity = 0.0;
+    std::vector<int> radii;
+    std::vector<cv::Mat> images;
+    Openings(const cv::Mat& disparity, double max_disparity, double pixels_per_disparity);
+    int radius_for(double d) const;
+    // The opening at (row, col) with the smallest window tall enough for disparity d.
+    float at(int row, int col, float d) const;
+  };
+  int first_ = 0, cols_ = 0, k_ = 1;
+  std::optional<Openings> down_, across_;
+};
+
+/// How far (px) a pixel of disparity d must stand in front of its background: gap_m in depth,
+/// and at least min_step_px.
+double standing_out_threshold(double d, double focal_baseline, const ForegroundOptions& options);
+
+/// Opens a CV_8U mask by a square of `min_thickness_px` (1 or less: unchanged).
+void open_thin_parts(cv::Mat& mask, int min_thickness_px);
 
 /// Fills each run of at most `max_run` zero (no match) pixels down the columns of a CV_32F map that
 /// has non-zero pixels at both ends with the smaller (farther) of the two: a hole in a surface is

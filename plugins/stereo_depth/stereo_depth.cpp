@@ -9,10 +9,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <optional>
 
+#include "depth_pipeline.hpp"
 #include "depth_statistics.hpp"
-#include "foreground_mask.hpp"
-#include "stereo_matching.hpp"
-#include "striped_matcher.hpp"
 
 namespace kestrel::stereo {
 
@@ -32,12 +30,7 @@ class StereoDepth final : public Node {
   struct Config {
     MatcherOptions matcher;
     ForegroundOptions foreground;
-    double min_depth_m = 0.5;  // the oCamS's range: 0.5 to 15 m
-    double max_depth_m = 15.0;
-    int pixel_step = 1;
-    int downscale = 1;
-    int strips = 0;  // auto
-    int strip_overlap_px = 48;
+    DepthOptions depth;
     std::int64_t snapshot_frame = 30;
   };
 
@@ -87,34 +80,47 @@ class StereoDepth final : public Node {
     c.param("texture_threshold", &Config::matcher, &M::texture_threshold)
         .range(0, 10000)
         .describe("BM only: minimum texture");
-    c.param("min_depth_m", &Config::min_depth_m)
+    c.param("min_depth_m", &Config::depth, &DepthOptions::min_depth_m)
         .range(0.01, 1000.0)
         .with_unit("m")
         .describe("nearest point kept (oCamS: 0.5 m)");
-    c.param("max_depth_m", &Config::max_depth_m)
+    c.param("max_depth_m", &Config::depth, &DepthOptions::max_depth_m)
         .range(0.01, 1000.0)
         .with_unit("m")
         .describe("farthest point kept (oCamS: 15 m)");
-    c.param("pixel_step", &Config::pixel_step)
+    c.param("pixel_step", &Config::depth, &DepthOptions::pixel_step)
         .range(1, 16)
         .with_unit("px")
         .describe("reproject every n-th pixel and row");
-    c.param("downscale", &Config::downscale)
+    c.param("downscale", &Config::depth, &DepthOptions::downscale)
         .range(1, 8)
         .describe(
             "match on images shrunk by this factor (num_disparities is divided by it too): faster, coarser depth. "
             "With a disparity_refiner after the clusters this is coarse-to-fine: the objects are found at low "
             "resolution and their disparity measured at full resolution");
-    c.param("strips", &Config::strips)
+    c.param("strips", &Config::depth, &DepthOptions::strips)
         .range(0, 16)
         .describe(
             "match the pair as this many horizontal strips in parallel (SGBM mode sgbm only; 1 = OpenCV's matcher on "
             "the whole image; 0 = 2 in mode sgbm, for two cores, else 1): the top strip is exactly the whole image's "
             "result, the others start strip_overlap_px higher so that SGBM's paths from above reach them");
-    c.param("strip_overlap_px", &Config::strip_overlap_px)
+    c.param("strip_overlap_px", &Config::depth, &DepthOptions::strip_overlap_px)
         .range(0, 1000)
         .with_unit("px")
         .describe("rows matched above each strip but the first and then dropped, in full-resolution pixels");
+    c.param("fine_regions", &Config::depth, &DepthOptions::fine_regions)
+        .describe(
+            "with downscale > 1 and foreground_gap_m > 0: match each region that stands out in the coarse map again "
+            "at full resolution, over that region's own disparities, and take its points and its foreground mask "
+            "from there (coarse-to-fine matching: full-resolution objects at little more than the coarse cost)");
+    c.param("fine_margin_px", &Config::depth, &DepthOptions::fine_margin_px)
+        .range(0, 200)
+        .with_unit("px")
+        .describe("fine_regions: full-resolution pixels matched around each coarse object");
+    c.param("fine_disparity_margin_px", &Config::depth, &DepthOptions::fine_disparity_margin_px)
+        .range(0, 64)
+        .with_unit("px")
+        .describe("fine_regions: disparities searched beyond a coarse object's own (full-resolution pixels)");
     c.param("foreground_gap_m", &Config::foreground, &ForegroundOptions::gap_m)
         .range(0.0, 100.0)
         .with_unit("m")
@@ -155,9 +161,12 @@ class StereoDepth final : public Node {
         .describe("frame index saved as PNG with --report; -1 = none");
     // What OpenCV would refuse, or silently change, said before the run.
     c.rule("min_depth_m < max_depth_m", {"min_depth_m", "max_depth_m"},
-           [](const Config& k) { return k.min_depth_m < k.max_depth_m; });
+           [](const Config& k) { return k.depth.min_depth_m < k.depth.max_depth_m; });
     c.rule("num_disparities is a multiple of 16", {"num_disparities"},
            [](const Config& k) { return k.matcher.num_disparities % 16 == 0; });
+    c.rule(
+        "fine_regions needs downscale > 1 and foreground_gap_m > 0", {"fine_regions", "downscale", "foreground_gap_m"},
+        [](const Config& k) { return !k.depth.fine_regions || (k.depth.downscale > 1 && k.foreground.gap_m > 0.0); });
     c.rule("block_size is odd", {"block_size"}, [](const Config& k) { return k.matcher.block_size % 2 == 1; });
     c.rule("block_size >= 5 for algorithm bm", {"block_size", "algorithm"},
            [](const Config& k) { return k.matcher.algorithm != M::Algorithm::bm || k.matcher.block_size >= 5; });
@@ -166,7 +175,8 @@ class StereoDepth final : public Node {
     c.rule(
         "strips > 1 only with algorithm sgbm in mode sgbm (the other modes aggregate from below, or run in "
         "parallel already)",
-        {"strips", "algorithm", "mode"}, [](const Config& k) { return k.strips <= 1 || is_five_path_sgbm(k.matcher); });
+        {"strips", "algorithm", "mode"},
+        [](const Config& k) { return k.depth.strips <= 1 || is_five_path_sgbm(k.matcher); });
     c.rule("p2 > p1 for algorithm sgbm (0 = 8 and 32 * block_size^2)", {"p2", "p1", "block_size", "algorithm"},
            [](const Config& k) {
              const int area = k.matcher.block_size * k.matcher.block_size;
@@ -184,39 +194,32 @@ class StereoDepth final : public Node {
         .config(std::move(c));
   }
 
-  explicit StereoDepth(NodeInit& init) : cfg_(init.config<Config>()) {
-    const MatcherOptions options = options_for_downscale(cfg_.matcher, cfg_.downscale);
-    num_disparities_ = options.num_disparities;
-    const bool sgbm_5_path = is_five_path_sgbm(options);
-    const int strips = cfg_.strips > 0 ? cfg_.strips : (sgbm_5_path ? 2 : 1);
-    matcher_.emplace(options, strips, (cfg_.strip_overlap_px + cfg_.downscale - 1) / cfg_.downscale);
-    foreground_ = options_for_downscale(cfg_.foreground, cfg_.downscale, options);
-  }
+  explicit StereoDepth(NodeInit& init)
+      : cfg_(init.config<Config>()), pipeline_(cfg_.matcher, cfg_.foreground, cfg_.depth) {}
 
   void process(Context& ctx) override {
     const auto frame = ctx.get(kFrame);
-    const ScaledPair pair = downscale(frame->left, frame->right, frame->calibration, cfg_.downscale);
-    const cv::Mat disparity = matcher_->compute(pair.left, pair.right);
+    DepthResult depth = pipeline_.compute(frame->left, frame->right, frame->calibration);
     msg::PointCloud cloud;
     cloud.stamp = frame->stamp;
     cloud.frame = "camera";
-    const cv::Mat foreground =
-        foreground_.gap_m > 0.0 ? foreground_mask(disparity, pair.calibration, foreground_) : cv::Mat();
-    cloud.points =
-        reproject(disparity, pair.calibration, cfg_.min_depth_m, cfg_.max_depth_m, cfg_.pixel_step, foreground);
-    cloud.pixels_per_point = cfg_.downscale * cfg_.pixel_step;
-    cloud.focal_baseline_px_m = pair.calibration.fx * pair.calibration.baseline_m;
+    cloud.points = depth.points;
+    cloud.pixels_per_point = depth.pixels_per_point;
+    cloud.focal_baseline_px_m = depth.focal_baseline_px_m;
     if (static_cast<std::int64_t>(frame->frame_index) == cfg_.snapshot_frame && ctx.keeps_artifacts()) {
       ctx.add_artifact("left.png", encode_png(frame->left), "left image");
       ctx.add_artifact("right.png", encode_png(frame->right), "right image");
-      ctx.add_artifact("disparity.png", encode_png(colourise_disparity(disparity, num_disparities_)),
+      ctx.add_artifact("disparity.png",
+                       encode_png(colourise_disparity(depth.disparity, pipeline_.matched_disparities())),
                        "disparity (near is warm)");
-      if (!foreground.empty())
-        ctx.add_artifact("foreground.png", encode_png(foreground),
+      if (!depth.foreground.empty())
+        ctx.add_artifact("foreground.png", encode_png(depth.foreground),
                          "foreground: what stands in front of its background");
     }
-    const auto sampled = [&](int n) { return static_cast<std::uint64_t>((n + cfg_.pixel_step - 1) / cfg_.pixel_step); };
-    statistics_.add_frame(*cloud.points, sampled(disparity.rows) * sampled(disparity.cols));
+    statistics_.add_frame(*cloud.points, depth.pixels_sampled);
+    regions_ += static_cast<std::uint64_t>(depth.regions);
+    region_pixels_ += depth.region_pixels;
+    full_pixels_ += static_cast<std::uint64_t>(frame->left.total());
     ctx.publish(kCloud, std::move(cloud));
   }
 
@@ -225,10 +228,16 @@ class StereoDepth final : public Node {
       const auto d = statistics_.percentile(fraction);
       return d ? nlohmann::json(*d) : nlohmann::json();
     };
+    ReportSection section;
+    if (cfg_.depth.fine_regions) {
+      const double frames = std::max<double>(1.0, static_cast<double>(statistics_.frames()));
+      section.quantity("fine_regions_per_frame", static_cast<double>(regions_) / frames)
+          .quantity("fine_pixel_fraction",
+                    full_pixels_ ? static_cast<double>(region_pixels_) / static_cast<double>(full_pixels_) : 0.0);
+    }
     ctx.set_report_section(
         ctx.id(),
-        ReportSection()
-            .quantity("frames", statistics_.frames())
+        section.quantity("frames", statistics_.frames())
             .quantity("points_per_frame", statistics_.points_per_frame())
             .quantity("valid_fraction", statistics_.valid_fraction())
             .quantity("depth_m", nlohmann::json{{"p5", depth(0.05)}, {"p50", depth(0.5)}, {"p95", depth(0.95)}}, "m")
@@ -239,10 +248,9 @@ class StereoDepth final : public Node {
 
  private:
   Config cfg_;
-  DepthStatistics statistics_{cfg_.min_depth_m, cfg_.max_depth_m};
-  int num_disparities_;           // after downscaling
-  ForegroundOptions foreground_;  // after downscaling
-  std::optional<StripedMatcher> matcher_;
+  DepthPipeline pipeline_;
+  DepthStatistics statistics_{cfg_.depth.min_depth_m, cfg_.depth.max_depth_m};
+  std::uint64_t regions_ = 0, region_pixels_ = 0, full_pixels_ = 0;
 };
 KESTREL_REGISTER_NODE(StereoDepth)
 

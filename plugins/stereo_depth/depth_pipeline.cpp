@@ -1,0 +1,91 @@
+#include "depth_pipeline.hpp"
+
+#include <opencv2/core/utility.hpp>
+
+#include "kestrel/error.hpp"
+
+namespace kestrel::stereo {
+
+DepthPipeline::DepthPipeline(const MatcherOptions& matcher, const ForegroundOptions& foreground,
+                             const DepthOptions& options)
+    : matcher_(matcher), foreground_(foreground), options_(options) {
+  if (options.fine_regions && (options.downscale < 2 || foreground.gap_m <= 0.0))
+    throw Error("fine_regions needs downscale > 1 and the foreground segmentation (foreground_gap_m > 0)");
+  coarse_matcher_options_ = options_for_downscale(matcher, options.downscale);
+  const int strips = options.strips > 0 ? options.strips : (is_five_path_sgbm(coarse_matcher_options_) ? 2 : 1);
+  matcher_strips_.emplace(coarse_matcher_options_, strips,
+                          (options.strip_overlap_px + options.downscale - 1) / options.downscale);
+  coarse_foreground_ = options_for_downscale(foreground, options.downscale, coarse_matcher_options_);
+  // Regions are candidates, judged again at full resolution: the coarse map flags a step as small
+  // as the full-resolution one (min_step_px is in the matched map's pixels).
+  if (options.fine_regions) coarse_foreground_.min_step_px /= options.downscale;
+}
+
+DepthResult DepthPipeline::compute(const cv::Mat& left, const cv::Mat& right, const msg::StereoCalibration& c) {
+  const ScaledPair pair = downscale(left, right, c, options_.downscale);
+  DepthResult result;
+  result.disparity = matcher_strips_->compute(pair.left, pair.right);
+  const bool segment = coarse_foreground_.gap_m > 0.0;
+  if (segment) result.foreground = foreground_mask(result.disparity, pair.calibration, coarse_foreground_);
+  const auto sampled = [&](int n) {
+    return static_cast<std::uint64_t>((n + options_.pixel_step - 1) / options_.pixel_step);
+  };
+  if (!options_.fine_regions) {
+    result.points = reproject(result.disparity, pair.calibration, options_.min_depth_m, options_.max_depth_m,
+                              options_.pixel_step, result.foreground);
+    result.pixels_per_point = options_.downscale * options_.pixel_step;
+    result.focal_baseline_px_m = pair.calibration.fx * pair.calibration.baseline_m;
+    result.pixels_sampled = sampled(result.disparity.rows) * sampled(result.disparity.cols);
+    return result;
+  }
+  result.points = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  add_fine_regions(grey_pair(left, right), c, pair.calibration, result);
+  result.pixels_per_point = options_.pixel_step;
+  result.focal_baseline_px_m = c.fx * c.baseline_m;
+  result.pixels_sampled = sampled(left.rows) * sampled(left.cols);
+  return result;
+}
+
+void DepthPipeline::add_fine_regions(const GreyPair& full, const msg::StereoCalibration& c,
+                                     const msg::StereoCalibration& coarse_calibration, DepthResult& result) const {
+  const int f = options_.downscale;
+  const cv::Mat coarse = disparity_unmatched_far(result.disparity);
+  const std::vector<FineRegion> regions =
+      fine_regions(result.foreground, coarse, f, full.left.size(),
+                   FineRegionOptions{options_.fine_margin_px, options_.fine_disparity_margin_px});
+  // The full-resolution pixels are judged against the coarse map's background: the background
+  // needs no finer detail, and the objects have gone from it.
+  const DisparityBackground background(coarse, coarse_calibration, coarse_foreground_);
+  std::vector<pcl::PointCloud<pcl::PointXYZ>::Ptr> parts(regions.size());
+  const double fb = c.fx * c.baseline_m;
+  cv::parallel_for_(cv::Range(0, static_cast<int>(regions.size())), [&](const cv::Range& range) {
+    for (int i = range.start; i < range.end; ++i) {
+      const FineRegion& region = regions[static_cast<std::size_t>(i)];
+      const cv::Mat disparity16 = match_region(full, region, matcher_);
+      const cv::Mat disparity = disparity_unmatched_far(disparity16);
+      cv::Mat mask(disparity.size(), CV_8U, cv::Scalar(0));
+      for (int v = 0; v < disparity.rows; ++v) {
+        const int row = std::min((region.box.y + v) / f, coarse.rows - 1);
+        const float* d = disparity.ptr<float>(v);
+        std::uint8_t* m = mask.ptr<std::uint8_t>(v);
+        for (int u = 0; u < disparity.cols; ++u) {
+          const int col = std::min((region.box.x + u) / f, coarse.cols - 1);
+          if (d[u] <= 0.0f || !background.sees(col)) continue;
+          const double behind = f * background.behind(row, col, d[u] / static_cast<float>(f));
+          if (d[u] - behind >= standing_out_threshold(d[u], fb, foreground_)) m[u] = 255;
+        }
+      }
+      open_thin_parts(mask, foreground_.min_thickness_px);
+      msg::StereoCalibration shifted = c;
+      shifted.cx -= region.box.x;
+      shifted.cy -= region.box.y;
+      parts[static_cast<std::size_t>(i)] =
+          reproject(disparity16, shifted, options_.min_depth_m, options_.max_depth_m, options_.pixel_step, mask);
+    }
+  });
+  for (const auto& part : parts) *result.points += *part;
+  result.regions = static_cast<int>(regions.size());
+  for (const FineRegion& r : regions) result.region_pixels += static_cast<std::uint64_t>(r.box.area());
+}
+
+}  // namespace kestrel::stereo
