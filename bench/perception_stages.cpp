@@ -5,7 +5,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "clustering.hpp"
-#include "foreground_mask.hpp"
+#include "depth_pipeline.hpp"
 #include "stereo_matching.hpp"
 #include "stereo_renderer.hpp"
 #include "striped_matcher.hpp"
@@ -175,27 +175,29 @@ BENCHMARK(BM_WholeChain)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->UseRe
 // or matched on half-resolution images (`downscale: 2`, coarse-to-fine; the refiner, which
 // measures each object at full resolution afterwards, is not in this loop). Compared in
 // scripts/bench with OpenCV's sgbm_3way alone on the same frames.
+// The chain as the stereo_depth node runs it (its DepthPipeline: matching in strips and the
+// paper graph's foreground segmentation), then voxels and clusters: 0 at full resolution, 1
+// coarse-to-fine (matched at half resolution), 2 coarse-to-fine with the regions that stand out
+// matched again at full resolution (`fine_regions`).
 void BM_NodeChain(benchmark::State& state) {
-  const int factor = static_cast<int>(state.range(0));
-  const stereo::MatcherOptions o = stereo::options_for_downscale(matcher_options(0), factor);
-  stereo::StripedMatcher matcher(o, 2, (48 + factor - 1) / factor);
+  const auto variant = static_cast<int>(state.range(0));
+  stereo::DepthOptions depth;
+  depth.downscale = variant == 0 ? 1 : 2;
+  depth.fine_regions = variant == 2;
   stereo::ForegroundOptions paper;
   paper.gap_m = 0.5;
-  const stereo::ForegroundOptions foreground = stereo::options_for_downscale(paper, factor, o);
+  stereo::DepthPipeline pipeline(matcher_options(0), paper, depth);
   std::size_t i = 0;
   for (auto _ : state) {
     const auto& [l, r] = frames().pairs[i++ % frames().pairs.size()];
-    const auto pair = stereo::downscale(l, r, frames().calibration, factor);
-    const cv::Mat disparity = matcher.compute(pair.left, pair.right);
-    const cv::Mat mask = stereo::foreground_mask(disparity, pair.calibration, foreground);
-    const auto cloud = stereo::reproject(disparity, pair.calibration, 0.5, 15.0, 1, mask);
+    const auto cloud = pipeline.compute(l, r, frames().calibration).points;
     const pcl::PointCloud<pcl::PointXYZ>::ConstPtr thin = voxel::downsample(*cloud, {});
     benchmark::DoNotOptimize(clustering::find_clusters(thin, {}).detections.size());
   }
-  state.SetLabel(factor == 1 ? "full resolution" : "coarse-to-fine");
+  state.SetLabel(variant == 0 ? "full resolution" : variant == 1 ? "coarse-to-fine" : "coarse-to-fine, fine regions");
   state.counters["fps"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_NodeChain)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_NodeChain)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The chain with matching on half-resolution images (stereo_depth's `downscale: 2`).
 void BM_WholeChainHalfResolution(benchmark::State& state) {

@@ -17,8 +17,11 @@ DepthPipeline::DepthPipeline(const MatcherOptions& matcher, const ForegroundOpti
                           (options.strip_overlap_px + options.downscale - 1) / options.downscale);
   coarse_foreground_ = options_for_downscale(foreground, options.downscale, coarse_matcher_options_);
   // Regions are candidates, judged again at full resolution: the coarse map flags a step as small
-  // as the full-resolution one (min_step_px is in the matched map's pixels).
+  // as the full-resolution one (min_step_px is in the matched map's pixels), and keeps parts
+  // thinner than the full-resolution mask would (an intruder against trees is a thin sliver in
+  // the coarse map).
   if (options.fine_regions) coarse_foreground_.min_step_px /= options.downscale;
+  if (options.fine_regions) coarse_foreground_.min_thickness_px = options.fine_candidate_thickness_px;
 }
 
 DepthResult DepthPipeline::compute(const cv::Mat& left, const cv::Mat& right, const msg::StereoCalibration& c) {
@@ -50,9 +53,7 @@ void DepthPipeline::add_fine_regions(const GreyPair& full, const msg::StereoCali
                                      const msg::StereoCalibration& coarse_calibration, DepthResult& result) const {
   const int f = options_.downscale;
   const cv::Mat coarse = disparity_unmatched_far(result.disparity);
-  const std::vector<FineRegion> regions =
-      fine_regions(result.foreground, coarse, f, full.left.size(),
-                   FineRegionOptions{options_.fine_margin_px, options_.fine_disparity_margin_px});
+  const std::vector<cv::Rect> regions = fine_regions(result.foreground, f, full.left.size(), options_.fine_margin_px);
   // The full-resolution pixels are judged against the coarse map's background: the background
   // needs no finer detail, and the objects have gone from it.
   const DisparityBackground background(coarse, coarse_calibration, coarse_foreground_);
@@ -60,16 +61,16 @@ void DepthPipeline::add_fine_regions(const GreyPair& full, const msg::StereoCali
   const double fb = c.fx * c.baseline_m;
   cv::parallel_for_(cv::Range(0, static_cast<int>(regions.size())), [&](const cv::Range& range) {
     for (int i = range.start; i < range.end; ++i) {
-      const FineRegion& region = regions[static_cast<std::size_t>(i)];
+      const cv::Rect& region = regions[static_cast<std::size_t>(i)];
       const cv::Mat disparity16 = match_region(full, region, matcher_);
       const cv::Mat disparity = disparity_unmatched_far(disparity16);
       cv::Mat mask(disparity.size(), CV_8U, cv::Scalar(0));
       for (int v = 0; v < disparity.rows; ++v) {
-        const int row = std::min((region.box.y + v) / f, coarse.rows - 1);
+        const int row = std::min((region.y + v) / f, coarse.rows - 1);
         const float* d = disparity.ptr<float>(v);
         std::uint8_t* m = mask.ptr<std::uint8_t>(v);
         for (int u = 0; u < disparity.cols; ++u) {
-          const int col = std::min((region.box.x + u) / f, coarse.cols - 1);
+          const int col = std::min((region.x + u) / f, coarse.cols - 1);
           if (d[u] <= 0.0f || !background.sees(col)) continue;
           const double behind = f * background.behind(row, col, d[u] / static_cast<float>(f));
           if (d[u] - behind >= standing_out_threshold(d[u], fb, foreground_)) m[u] = 255;
@@ -77,15 +78,15 @@ void DepthPipeline::add_fine_regions(const GreyPair& full, const msg::StereoCali
       }
       open_thin_parts(mask, foreground_.min_thickness_px);
       msg::StereoCalibration shifted = c;
-      shifted.cx -= region.box.x;
-      shifted.cy -= region.box.y;
+      shifted.cx -= region.x;
+      shifted.cy -= region.y;
       parts[static_cast<std::size_t>(i)] =
           reproject(disparity16, shifted, options_.min_depth_m, options_.max_depth_m, options_.pixel_step, mask);
     }
   });
   for (const auto& part : parts) *result.points += *part;
   result.regions = static_cast<int>(regions.size());
-  for (const FineRegion& r : regions) result.region_pixels += static_cast<std::uint64_t>(r.box.area());
+  for (const cv::Rect& r : regions) result.region_pixels += static_cast<std::uint64_t>(r.area());
 }
 
 }  // namespace kestrel::stereo

@@ -23,7 +23,7 @@ struct DepthOptions {
   /// again at full resolution, and take its points (and its mask) from there.
   bool fine_regions = false;
   int fine_margin_px = 8;
-  int fine_disparity_margin_px = 4;
+  int fine_candidate_thickness_px = 2;  ///< the coarse candidates' opening, in coarse pixels
 };
 
 struct DepthResult {

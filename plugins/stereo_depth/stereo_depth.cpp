@@ -111,16 +111,18 @@ class StereoDepth final : public Node {
     c.param("fine_regions", &Config::depth, &DepthOptions::fine_regions)
         .describe(
             "with downscale > 1 and foreground_gap_m > 0: match each region that stands out in the coarse map again "
-            "at full resolution, over that region's own disparities, and take its points and its foreground mask "
-            "from there (coarse-to-fine matching: full-resolution objects at little more than the coarse cost)");
+            "at full resolution, and take its points and its foreground mask from there (coarse-to-fine matching: "
+            "full-resolution objects at little more than the coarse cost)");
     c.param("fine_margin_px", &Config::depth, &DepthOptions::fine_margin_px)
         .range(0, 200)
         .with_unit("px")
         .describe("fine_regions: full-resolution pixels matched around each coarse object");
-    c.param("fine_disparity_margin_px", &Config::depth, &DepthOptions::fine_disparity_margin_px)
-        .range(0, 64)
+    c.param("fine_candidate_thickness_px", &Config::depth, &DepthOptions::fine_candidate_thickness_px)
+        .range(1, 31)
         .with_unit("px")
-        .describe("fine_regions: disparities searched beyond a coarse object's own (full-resolution pixels)");
+        .describe(
+            "fine_regions: the coarse mask's parts thinner than this (coarse pixels) are no candidates; the "
+            "full-resolution mask is then opened by foreground_min_thickness_px");
     c.param("foreground_gap_m", &Config::foreground, &ForegroundOptions::gap_m)
         .range(0.0, 100.0)
         .with_unit("m")

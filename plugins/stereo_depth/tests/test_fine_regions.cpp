@@ -76,61 +76,38 @@ std::size_t points_in(const pcl::PointCloud<pcl::PointXYZ>& cloud, cv::Rect r, i
 
 }  // namespace
 
-TEST(FineRegions, EachCoarseObjectBecomesAFullResolutionBoxWithItsOwnDisparities) {
-  cv::Mat mask(240, 320, CV_8U, cv::Scalar(0)), disparity(240, 320, CV_32F, cv::Scalar(0.0f));
+TEST(FineRegions, EachCoarseObjectBecomesAFullResolutionBoxWithAMargin) {
+  cv::Mat mask(240, 320, CV_8U, cv::Scalar(0));
   mask(cv::Rect(100, 50, 10, 4)).setTo(255);
-  disparity(cv::Rect(100, 50, 10, 4)).setTo(9.0f);
-  disparity.at<float>(51, 104) = 10.5f;
   mask(cv::Rect(250, 150, 6, 6)).setTo(255);
-  disparity(cv::Rect(250, 150, 6, 6)).setTo(40.0f);
-  const auto regions = fine_regions(mask, disparity, 2, {640, 480}, {8, 4});
-  ASSERT_EQ(regions.size(), 2u);
-  EXPECT_EQ(regions[0].box, cv::Rect(200 - 8, 100 - 8, 20 + 16, 8 + 16));
-  // Coarse 9 to 10.5 px: full resolution (9 - 1) * 2 - 4 = 12 to (10.5 + 1) * 2 + 4 = 27.
-  EXPECT_EQ(regions[0].min_disparity, 12);
-  EXPECT_EQ(regions[0].num_disparities, 16);
-  EXPECT_EQ(regions[1].box, cv::Rect(500 - 8, 300 - 8, 12 + 16, 12 + 16));
-  EXPECT_EQ(regions[1].min_disparity, 74);
-  EXPECT_GE(regions[1].min_disparity + regions[1].num_disparities - 1, 86);
+  mask.at<std::uint8_t>(55, 110) = 255;  // touches the first object's corner: part of it
+  const auto boxes = fine_regions(mask, 2, {640, 480}, 8);
+  ASSERT_EQ(boxes.size(), 2u);
+  EXPECT_EQ(boxes[0], cv::Rect(200 - 8, 100 - 8, 22 + 16, 12 + 16));
+  EXPECT_EQ(boxes[1], cv::Rect(500 - 8, 300 - 8, 12 + 16, 12 + 16));
 }
 
-TEST(FineRegions, ARegionAlsoSearchesTheDisparitiesOfTheBackgroundAroundIt) {
-  // An object at 12 px in front of a wall at 5 px: the pixels beside it must be able to find the
-  // wall, or the object's disparity spreads over them.
-  cv::Mat mask(240, 320, CV_8U, cv::Scalar(0)), disparity(240, 320, CV_32F, cv::Scalar(5.0f));
-  mask(cv::Rect(100, 50, 10, 4)).setTo(255);
-  disparity(cv::Rect(100, 50, 10, 4)).setTo(12.0f);
-  disparity.at<float>(10, 10) = 1.0f;  // far outside the box: not searched
-  const auto regions = fine_regions(mask, disparity, 2, {640, 480}, {8, 4});
-  ASSERT_EQ(regions.size(), 1u);
-  EXPECT_EQ(regions[0].min_disparity, (5 - 1) * 2 - 4);
-  EXPECT_EQ(regions[0].num_disparities, 32);  // 4 to (12 + 1) * 2 + 4 = 30
-}
-
-TEST(FineRegions, OverlappingRegionsAreMergedAndBoxesStayInsideTheImage) {
-  cv::Mat mask(240, 320, CV_8U, cv::Scalar(0)), disparity(240, 320, CV_32F, cv::Scalar(0.0f));
+TEST(FineRegions, OverlappingBoxesAreMergedAndStayInsideTheImage) {
+  cv::Mat mask(240, 320, CV_8U, cv::Scalar(0));
   mask(cv::Rect(0, 0, 5, 5)).setTo(255);  // in the corner: the margin is cut at the image's edge
-  disparity(cv::Rect(0, 0, 5, 5)).setTo(3.0f);
   mask(cv::Rect(7, 2, 5, 5)).setTo(255);  // 2 coarse px away: the margins overlap
-  disparity(cv::Rect(7, 2, 5, 5)).setTo(20.0f);
-  const auto regions = fine_regions(mask, disparity, 2, {640, 480}, {8, 4});
-  ASSERT_EQ(regions.size(), 1u);
-  EXPECT_EQ(regions[0].box, cv::Rect(0, 0, 24 + 8, 14 + 8));
-  EXPECT_EQ(regions[0].min_disparity, 0);
-  EXPECT_GE(regions[0].min_disparity + regions[0].num_disparities - 1, 46);
+  mask(cv::Rect(315, 235, 5, 5)).setTo(255);
+  const auto boxes = fine_regions(mask, 2, {640, 480}, 8);
+  ASSERT_EQ(boxes.size(), 2u);
+  EXPECT_EQ(boxes[0], cv::Rect(0, 0, 24 + 8, 14 + 8));
+  EXPECT_EQ(boxes[1], cv::Rect(630 - 8, 470 - 8, 18, 18));
 }
 
-TEST(FineRegions, ARegionMatchedOverItsOwnFewDisparitiesFindsTheBox) {
+TEST(FineRegions, ARegionMatchedAloneIsWhatMatchingTheWholePairGivesThere) {
   const auto [left, right] = box_in_front_of_a_wall();
-  const FineRegion region{kBox, 16, 16};  // 16 to 31 px, nowhere near the 80 the whole image searches
-  const cv::Mat disparity = match_region(grey_pair(left, right), region, paper_matcher());
-  ASSERT_EQ(disparity.size(), kBox.size());
-  const cv::Rect inner(4, 4, kBox.width - 8, kBox.height - 8);
-  int right_count = 0;
-  for (int v = inner.y; v < inner.br().y; ++v)
-    for (int u = inner.x; u < inner.br().x; ++u)
-      if (std::abs(disparity.at<short>(v, u) / 16.0 - kBoxDisparity) < 0.5) ++right_count;
-  EXPECT_GE(right_count, inner.area() * 95 / 100);
+  const cv::Rect region(kBox.x - 8, kBox.y - 8, kBox.width + 16, kBox.height + 16);
+  const cv::Mat alone = match_region(grey_pair(left, right), region, paper_matcher());
+  ASSERT_EQ(alone.size(), region.size());
+  const cv::Mat whole = compute_disparity(*make_matcher(paper_matcher()), left, right)(region);
+  EXPECT_LE(cv::countNonZero(alone != whole), region.area() / 100);
+  // The box at its disparity, the wall above it at the wall's.
+  EXPECT_NEAR(alone.at<short>(18, 30) / 16.0, kBoxDisparity, 0.5);
+  EXPECT_NEAR(alone.at<short>(2, 30) / 16.0, 4.0, 0.5);  // above it (beside it, on its left, the wall is hidden)
 }
 
 TEST(DepthPipeline, CoarseToFineGivesTheFullResolutionObjectAndNothingElse) {
