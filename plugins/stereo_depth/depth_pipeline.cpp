@@ -12,6 +12,8 @@ DepthPipeline::DepthPipeline(const MatcherOptions& matcher, const ForegroundOpti
   if (options.fine_regions && (options.downscale < 2 || foreground.gap_m <= 0.0))
     throw Error("fine_regions needs downscale > 1 and the foreground segmentation (foreground_gap_m > 0)");
   coarse_matcher_options_ = options_for_downscale(matcher, options.downscale);
+  if (options.downscale > 1 && options.coarse_block_size > 0)
+    coarse_matcher_options_.block_size = options.coarse_block_size;
   const int strips = options.strips > 0 ? options.strips : (is_five_path_sgbm(coarse_matcher_options_) ? 2 : 1);
   matcher_strips_.emplace(coarse_matcher_options_, strips,
                           (options.strip_overlap_px + options.downscale - 1) / options.downscale);

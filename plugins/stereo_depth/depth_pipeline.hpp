@@ -18,6 +18,9 @@ struct DepthOptions {
   int pixel_step = 1;
   int downscale = 1;
   int strips = 0;  ///< 0: 2 for 5-path SGBM, else 1
+  /// The block matched on shrunk images (downscale > 1); 0: the matcher's block_size. A smaller
+  /// block keeps a far object that is a few coarse pixels tall.
+  int coarse_block_size = 0;
   int strip_overlap_px = 48;
   /// With downscale > 1 and the foreground segmentation on: match each region that stands out
   /// again at full resolution, and take its points (and its mask) from there.

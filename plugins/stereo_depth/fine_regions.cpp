@@ -40,14 +40,14 @@ std::vector<cv::Rect> fine_regions(const cv::Mat& coarse_mask, int factor, cv::S
 }
 
 cv::Mat match_region(const GreyPair& pair, const cv::Rect& box, const MatcherOptions& options) {
-  // SGBM's paths come from the left and from the rows above: they start a run-in before the box.
-  // On the left the search also reaches its disparities further; below and on the right, the
-  // block and the median reach a little.
-  const int reach = options.block_size / 2 + 2;
+  // SGBM's paths come from the left, from the right within the row and from the rows above: they
+  // start a run-in before the box. On the left the search also reaches its disparities further;
+  // below, the block and the median reach a little.
+  const int below = options.block_size / 2 + 2;
   const cv::Rect image(0, 0, pair.left.cols, pair.left.rows);
   const cv::Rect crop =
       cv::Rect(cv::Point(box.x - options.min_disparity - options.num_disparities - kRunInPx, box.y - kRunInPx),
-               cv::Point(box.br().x + reach, box.br().y + reach)) &
+               cv::Point(box.br().x + kRunInPx, box.br().y + below)) &
       image;
   cv::Mat disparity;
   make_matcher(options)->compute(pair.left(crop), pair.right(crop), disparity);

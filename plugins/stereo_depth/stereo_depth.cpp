@@ -98,6 +98,12 @@ class StereoDepth final : public Node {
             "match on images shrunk by this factor (num_disparities is divided by it too): faster, coarser depth. "
             "With a disparity_refiner after the clusters this is coarse-to-fine: the objects are found at low "
             "resolution and their disparity measured at full resolution");
+    c.param("coarse_block_size", &Config::depth, &DepthOptions::coarse_block_size)
+        .range(0, 51)
+        .with_unit("px")
+        .describe(
+            "with downscale > 1: the block matched on the shrunk images, odd; 0 = block_size (a smaller block keeps "
+            "a far object that is a few coarse pixels tall; p1 and p2 at 0 follow it)");
     c.param("strips", &Config::depth, &DepthOptions::strips)
         .range(0, 16)
         .describe(
@@ -170,6 +176,8 @@ class StereoDepth final : public Node {
         "fine_regions needs downscale > 1 and foreground_gap_m > 0", {"fine_regions", "downscale", "foreground_gap_m"},
         [](const Config& k) { return !k.depth.fine_regions || (k.depth.downscale > 1 && k.foreground.gap_m > 0.0); });
     c.rule("block_size is odd", {"block_size"}, [](const Config& k) { return k.matcher.block_size % 2 == 1; });
+    c.rule("coarse_block_size is 0 or odd", {"coarse_block_size"},
+           [](const Config& k) { return k.depth.coarse_block_size == 0 || k.depth.coarse_block_size % 2 == 1; });
     c.rule("block_size >= 5 for algorithm bm", {"block_size", "algorithm"},
            [](const Config& k) { return k.matcher.algorithm != M::Algorithm::bm || k.matcher.block_size >= 5; });
     c.rule("pre_filter_cap <= 63 for algorithm bm", {"pre_filter_cap", "algorithm"},
