@@ -1,6 +1,8 @@
 #include "depth_pipeline.hpp"
 
+#include <algorithm>
 #include <opencv2/core/utility.hpp>
+#include <optional>
 
 #include "kestrel/error.hpp"
 
@@ -24,6 +26,7 @@ DepthPipeline::DepthPipeline(const MatcherOptions& matcher, const ForegroundOpti
   // the coarse map).
   if (options.fine_regions) coarse_foreground_.min_step_px /= options.downscale;
   if (options.fine_regions) coarse_foreground_.min_thickness_px = options.fine_candidate_thickness_px;
+  region_foreground_ = options_for_downscale(foreground, 1, matcher);
 }
 
 DepthResult DepthPipeline::compute(const cv::Mat& left, const cv::Mat& right, const msg::StereoCalibration& c) {
@@ -31,7 +34,12 @@ DepthResult DepthPipeline::compute(const cv::Mat& left, const cv::Mat& right, co
   DepthResult result;
   result.disparity = matcher_strips_->compute(pair.left, pair.right);
   const bool segment = coarse_foreground_.gap_m > 0.0;
-  if (segment) result.foreground = foreground_mask(result.disparity, pair.calibration, coarse_foreground_);
+  std::optional<DisparityBackground> background;
+  if (segment) {
+    const cv::Mat disparity = disparity_unmatched_far(result.disparity);
+    background.emplace(disparity, pair.calibration, coarse_foreground_);
+    result.foreground = foreground_mask(disparity, *background, pair.calibration, coarse_foreground_);
+  }
   const auto sampled = [&](int n) {
     return static_cast<std::uint64_t>((n + options_.pixel_step - 1) / options_.pixel_step);
   };
@@ -44,7 +52,7 @@ DepthResult DepthPipeline::compute(const cv::Mat& left, const cv::Mat& right, co
     return result;
   }
   result.points = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-  add_fine_regions(grey_pair(left, right), c, pair.calibration, result);
+  add_fine_regions(grey_pair(left, right), c, *background, result);
   result.pixels_per_point = options_.pixel_step;
   result.focal_baseline_px_m = c.fx * c.baseline_m;
   result.pixels_sampled = sampled(left.rows) * sampled(left.cols);
@@ -52,38 +60,32 @@ DepthResult DepthPipeline::compute(const cv::Mat& left, const cv::Mat& right, co
 }
 
 void DepthPipeline::add_fine_regions(const GreyPair& full, const msg::StereoCalibration& c,
-                                     const msg::StereoCalibration& coarse_calibration, DepthResult& result) const {
+                                     const DisparityBackground& coarse_background, DepthResult& result) const {
   const int f = options_.downscale;
-  const cv::Mat coarse = disparity_unmatched_far(result.disparity);
   const std::vector<cv::Rect> regions = fine_regions(result.foreground, f, full.left.size(), options_.fine_margin_px);
-  // The full-resolution pixels are judged against the coarse map's background: the background
-  // needs no finer detail, and the objects have gone from it.
-  const DisparityBackground background(coarse, coarse_calibration, coarse_foreground_);
   std::vector<pcl::PointCloud<pcl::PointXYZ>::Ptr> parts(regions.size());
   const double fb = c.fx * c.baseline_m;
   cv::parallel_for_(cv::Range(0, static_cast<int>(regions.size())), [&](const cv::Range& range) {
     for (int i = range.start; i < range.end; ++i) {
       const cv::Rect& region = regions[static_cast<std::size_t>(i)];
-      const cv::Mat disparity16 = match_region(full, region, matcher_);
-      const cv::Mat disparity = disparity_unmatched_far(disparity16);
-      cv::Mat mask(disparity.size(), CV_8U, cv::Scalar(0));
-      for (int v = 0; v < disparity.rows; ++v) {
-        const int row = std::min((region.y + v) / f, coarse.rows - 1);
-        const float* d = disparity.ptr<float>(v);
-        std::uint8_t* m = mask.ptr<std::uint8_t>(v);
-        for (int u = 0; u < disparity.cols; ++u) {
-          const int col = std::min((region.x + u) / f, coarse.cols - 1);
-          if (d[u] <= 0.0f || !background.sees(col)) continue;
-          const double behind = f * background.behind(row, col, d[u] / static_cast<float>(f));
-          if (d[u] - behind >= standing_out_threshold(d[u], fb, foreground_)) m[u] = 255;
-        }
+      const RegionMatch match = match_region_crop(full, region, matcher_);
+      const cv::Mat crop = disparity_unmatched_far(match.disparity16);
+      // The full-resolution pixels are judged against the coarse map's background (the objects
+      // have gone from it, and it reaches beyond the region) and, where the region's own map has
+      // one, against that: what matched only at full resolution is its own background there.
+      std::optional<DisparityBackground> own;
+      if (options_.fine_region_background) {
+        ForegroundOptions options = region_foreground_;
+        options.unseen_left_columns = match.unseen_left_columns;
+        own.emplace(crop, c, options);
       }
-      open_thin_parts(mask, foreground_.min_thickness_px);
+      const cv::Mat mask =
+          region_foreground(crop, match.box, region.tl(), f, coarse_background, own ? &*own : nullptr, fb, foreground_);
       msg::StereoCalibration shifted = c;
       shifted.cx -= region.x;
       shifted.cy -= region.y;
-      parts[static_cast<std::size_t>(i)] =
-          reproject(disparity16, shifted, options_.min_depth_m, options_.max_depth_m, options_.pixel_step, mask);
+      parts[static_cast<std::size_t>(i)] = reproject(match.disparity16(match.box), shifted, options_.min_depth_m,
+                                                     options_.max_depth_m, options_.pixel_step, mask);
     }
   });
   for (const auto& part : parts) *result.points += *part;

@@ -27,6 +27,11 @@ struct DepthOptions {
   bool fine_regions = false;
   int fine_margin_px = 8;
   int fine_candidate_thickness_px = 2;  ///< the coarse candidates' opening, in coarse pixels
+  /// Judge a region's full-resolution pixels also against the background of the region's own
+  /// full-resolution map, not only the coarse map's: where the coarse match found nothing (a
+  /// canopy's leaves), the coarse background is the sky, and the leaves matched at full
+  /// resolution would stand out of it.
+  bool fine_region_background = true;
 };
 
 struct DepthResult {
@@ -52,10 +57,11 @@ class DepthPipeline {
 
  private:
   void add_fine_regions(const GreyPair& full, const msg::StereoCalibration& calibration,
-                        const msg::StereoCalibration& coarse_calibration, DepthResult& result) const;
+                        const DisparityBackground& coarse_background, DepthResult& result) const;
 
   MatcherOptions matcher_;
-  ForegroundOptions foreground_;  // as given, for full-resolution pixels
+  ForegroundOptions foreground_;         // as given, for full-resolution pixels
+  ForegroundOptions region_foreground_;  // for a region's crop matched at full resolution
   MatcherOptions coarse_matcher_options_;
   ForegroundOptions coarse_foreground_;  // for the matched (coarse) map
   DepthOptions options_;

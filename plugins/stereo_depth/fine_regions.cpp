@@ -1,5 +1,6 @@
 #include "fine_regions.hpp"
 
+#include <algorithm>
 #include <opencv2/imgproc.hpp>
 
 namespace kestrel::stereo {
@@ -39,19 +40,47 @@ std::vector<cv::Rect> fine_regions(const cv::Mat& coarse_mask, int factor, cv::S
   return boxes;
 }
 
-cv::Mat match_region(const GreyPair& pair, const cv::Rect& box, const MatcherOptions& options) {
+RegionMatch match_region_crop(const GreyPair& pair, const cv::Rect& box, const MatcherOptions& options) {
   // SGBM's paths come from the left, from the right within the row and from the rows above: they
   // start a run-in before the box. On the left the search also reaches its disparities further;
   // below, the block and the median reach a little.
   const int below = options.block_size / 2 + 2;
+  const int search = options.min_disparity + options.num_disparities;
   const cv::Rect image(0, 0, pair.left.cols, pair.left.rows);
-  const cv::Rect crop =
-      cv::Rect(cv::Point(box.x - options.min_disparity - options.num_disparities - kRunInPx, box.y - kRunInPx),
-               cv::Point(box.br().x + kRunInPx, box.br().y + below)) &
-      image;
-  cv::Mat disparity;
-  make_matcher(options)->compute(pair.left(crop), pair.right(crop), disparity);
-  return disparity(box - crop.tl()).clone();
+  const cv::Rect crop = cv::Rect(cv::Point(box.x - search - kRunInPx, box.y - kRunInPx),
+                                 cv::Point(box.br().x + kRunInPx, box.br().y + below)) &
+                        image;
+  RegionMatch match;
+  make_matcher(options)->compute(pair.left(crop), pair.right(crop), match.disparity16);
+  match.box = box - crop.tl();
+  match.unseen_left_columns = std::max(0, search);
+  return match;
+}
+
+cv::Mat region_foreground(const cv::Mat& crop, const cv::Rect& box, cv::Point box_origin, int f,
+                          const DisparityBackground& coarse, const DisparityBackground* own, double fb,
+                          const ForegroundOptions& options) {
+  CV_Assert(crop.type() == CV_32F && f >= 1);
+  cv::Mat mask(box.size(), CV_8U, cv::Scalar(0));
+  for (int v = 0; v < box.height; ++v) {
+    const int row = std::min((box_origin.y + v) / f, coarse.rows() - 1);
+    const float* d = crop.ptr<float>(box.y + v) + box.x;
+    std::uint8_t* m = mask.ptr<std::uint8_t>(v);
+    for (int u = 0; u < box.width; ++u) {
+      const int col = std::min((box_origin.x + u) / f, coarse.cols() - 1);
+      if (d[u] <= 0.0f || !coarse.sees(col)) continue;
+      float behind = static_cast<float>(f) * coarse.behind(row, col, d[u] / static_cast<float>(f));
+      if (own != nullptr && own->sees(box.x + u)) behind = std::max(behind, own->behind(box.y + v, box.x + u, d[u]));
+      if (d[u] - behind >= standing_out_threshold(d[u], fb, options)) m[u] = 255;
+    }
+  }
+  open_thin_parts(mask, options.min_thickness_px);
+  return mask;
+}
+
+cv::Mat match_region(const GreyPair& pair, const cv::Rect& box, const MatcherOptions& options) {
+  const RegionMatch match = match_region_crop(pair, box, options);
+  return match.disparity16(match.box).clone();
 }
 
 }  // namespace kestrel::stereo

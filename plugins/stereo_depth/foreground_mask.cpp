@@ -114,7 +114,7 @@ cv::Mat disparity_unmatched_far(const cv::Mat& disparity16) {
 
 DisparityBackground::DisparityBackground(const cv::Mat& disparity, const msg::StereoCalibration& c,
                                          const ForegroundOptions& o)
-    : first_(std::clamp(o.unseen_left_columns, 0, disparity.cols)), cols_(disparity.cols) {
+    : first_(std::clamp(o.unseen_left_columns, 0, disparity.cols)), rows_(disparity.rows), cols_(disparity.cols) {
   CV_Assert(disparity.type() == CV_32F);
   if (first_ == cols_) return;
   double max_disparity = 0.0;
@@ -154,7 +154,12 @@ double standing_out_threshold(double d, double focal_baseline, const ForegroundO
 
 cv::Mat foreground_mask(const cv::Mat& disparity16, const msg::StereoCalibration& c, const ForegroundOptions& o) {
   const cv::Mat disparity = disparity_unmatched_far(disparity16);
-  const DisparityBackground background(disparity, c, o);
+  return foreground_mask(disparity, DisparityBackground(disparity, c, o), c, o);
+}
+
+cv::Mat foreground_mask(const cv::Mat& disparity, const DisparityBackground& background,
+                        const msg::StereoCalibration& c, const ForegroundOptions& o) {
+  CV_Assert(disparity.type() == CV_32F);
   const double fb = c.fx * c.baseline_m;
   cv::Mat mask(disparity.size(), CV_8U, cv::Scalar(0));
   for (int v = 0; v < disparity.rows; ++v) {

@@ -44,6 +44,13 @@ ForegroundOptions options_for_downscale(ForegroundOptions options, int factor, c
 cv::Mat foreground_mask(const cv::Mat& disparity16, const msg::StereoCalibration& calibration,
                         const ForegroundOptions& options);
 
+class DisparityBackground;
+
+/// The same for a map already converted (`disparity_unmatched_far`) whose background is already
+/// built, for a caller that judges other pixels against that background too.
+cv::Mat foreground_mask(const cv::Mat& disparity, const DisparityBackground& background,
+                        const msg::StereoCalibration& calibration, const ForegroundOptions& options);
+
 /// A CV_16S disparity map (1/16 px) as CV_32F pixels, no match (<= 0) as 0: infinitely far.
 cv::Mat disparity_unmatched_far(const cv::Mat& disparity16);
 
@@ -58,6 +65,8 @@ class DisparityBackground {
                       const ForegroundOptions& options);
   /// False for the unseen columns on the left (outside the picture).
   bool sees(int col) const { return col >= first_ && col < cols_; }
+  int rows() const { return rows_; }
+  int cols() const { return cols_; }
   /// The background's disparity behind pixel (row, col) of the map for an object of disparity d
   /// there; `col` must be seen.
   float behind(int row, int col, float d) const;
@@ -75,7 +84,7 @@ class DisparityBackground {
     // The opening at (row, col) with the smallest window tall enough for disparity d.
     float at(int row, int col, float d) const;
   };
-  int first_ = 0, cols_ = 0, k_ = 1;
+  int first_ = 0, rows_ = 0, cols_ = 0, k_ = 1;
   std::optional<Openings> down_, across_;
 };
 

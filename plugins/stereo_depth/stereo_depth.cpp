@@ -7,7 +7,6 @@
 #include <kestrel/messages/stereo_frame.hpp>
 #include <kestrel/plugin.hpp>
 #include <opencv2/imgcodecs.hpp>
-#include <optional>
 
 #include "depth_pipeline.hpp"
 #include "depth_statistics.hpp"
@@ -129,6 +128,10 @@ class StereoDepth final : public Node {
         .describe(
             "fine_regions: the coarse mask's parts thinner than this (coarse pixels) are no candidates; the "
             "full-resolution mask is then opened by foreground_min_thickness_px");
+    c.param("fine_region_background", &Config::depth, &DepthOptions::fine_region_background)
+        .describe(
+            "fine_regions: judge a region's full-resolution pixels against its own full-resolution map's background "
+            "too, not only the coarse map's (leaves the coarse match missed stand out of the sky behind them)");
     c.param("foreground_gap_m", &Config::foreground, &ForegroundOptions::gap_m)
         .range(0.0, 100.0)
         .with_unit("m")

@@ -141,3 +141,26 @@ TEST(DepthPipeline, FineRegionsNeedACoarseMatchAndTheSegmentation) {
   EXPECT_THROW(DepthPipeline(paper_matcher(), paper_foreground(), no_coarse), Error);
   EXPECT_THROW(DepthPipeline(paper_matcher(), ForegroundOptions{}, coarse_to_fine()), Error);
 }
+
+TEST(FineRegions, LeavesTheCoarseMatchMissedAreTheirOwnBackground) {
+  // The coarse match found nothing (a canopy's fine leaves, blurred away at half resolution), so
+  // its background is the sky. At full resolution the region's crop holds the canopy at 6.1 m
+  // (disparity 6) and a drone of 30 x 10 px at 5 m (7.3) in front of it.
+  const cv::Mat coarse_map(240, 320, CV_32F, cv::Scalar(0.0f));
+  const DisparityBackground coarse(coarse_map, region_calibration(), paper_foreground());
+  cv::Mat crop(120, 200, CV_32F, cv::Scalar(6.0f));
+  const cv::Rect drone(90, 55, 30, 10);
+  crop(drone).setTo(7.3f);
+  const cv::Rect box(20, 16, 170, 100);
+  const cv::Point origin(400, 200);
+  const double fb = 304.0 * 0.12;
+  const DisparityBackground own(crop, region_calibration(), paper_foreground());
+
+  const cv::Mat judged = region_foreground(crop, box, origin, 2, coarse, &own, fb, paper_foreground());
+  ASSERT_EQ(judged.size(), box.size());
+  EXPECT_EQ(cv::countNonZero(judged), drone.area());
+  EXPECT_EQ(cv::countNonZero(judged(drone - box.tl())), drone.area());
+  // Against the coarse background alone every leaf stands out of the sky.
+  const cv::Mat coarse_only = region_foreground(crop, box, origin, 2, coarse, nullptr, fb, paper_foreground());
+  EXPECT_EQ(cv::countNonZero(coarse_only), box.area());
+}
