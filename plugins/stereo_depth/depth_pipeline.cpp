@@ -1,6 +1,5 @@
 #include "depth_pipeline.hpp"
 
-#include <algorithm>
 #include <opencv2/core/utility.hpp>
 #include <optional>
 
@@ -74,11 +73,7 @@ void DepthPipeline::add_fine_regions(const GreyPair& full, const msg::StereoCali
       // have gone from it, and it reaches beyond the region) and, where the region's own map has
       // one, against that: what matched only at full resolution is its own background there.
       std::optional<DisparityBackground> own;
-      if (options_.fine_region_background) {
-        ForegroundOptions options = region_foreground_;
-        options.unseen_left_columns = match.unseen_left_columns;
-        own.emplace(crop, c, options);
-      }
+      if (options_.fine_region_background) own.emplace(crop, c, region_foreground_);
       const cv::Mat mask =
           region_foreground(crop, match.box, region.tl(), f, coarse_background, own ? &*own : nullptr, fb, foreground_);
       msg::StereoCalibration shifted = c;

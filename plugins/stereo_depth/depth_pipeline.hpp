@@ -61,7 +61,7 @@ class DepthPipeline {
 
   MatcherOptions matcher_;
   ForegroundOptions foreground_;         // as given, for full-resolution pixels
-  ForegroundOptions region_foreground_;  // for a region's crop matched at full resolution
+  ForegroundOptions region_foreground_;  // for a region's crop matched at full resolution (its search columns unseen)
   MatcherOptions coarse_matcher_options_;
   ForegroundOptions coarse_foreground_;  // for the matched (coarse) map
   DepthOptions options_;

@@ -53,7 +53,6 @@ RegionMatch match_region_crop(const GreyPair& pair, const cv::Rect& box, const M
   RegionMatch match;
   make_matcher(options)->compute(pair.left(crop), pair.right(crop), match.disparity16);
   match.box = box - crop.tl();
-  match.unseen_left_columns = std::max(0, search);
   return match;
 }
 

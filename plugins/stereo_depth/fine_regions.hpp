@@ -22,12 +22,11 @@ std::vector<cv::Rect> fine_regions(const cv::Mat& coarse_mask, int factor, cv::S
 /// box it is what matching the whole pair gives there, up to the paths' start.
 cv::Mat match_region(const GreyPair& pair, const cv::Rect& box, const MatcherOptions& options);
 
-/// What `match_region` matched: the whole crop's disparity (CV_16S, 1/16 px), where the box lies in
-/// it, and the columns on the crop's left that the search cannot match.
+/// What `match_region` matched: the whole crop's disparity (CV_16S, 1/16 px; its first
+/// min_disparity + num_disparities columns hold no match) and where the box lies in it.
 struct RegionMatch {
   cv::Mat disparity16;
   cv::Rect box;
-  int unseen_left_columns = 0;
 };
 RegionMatch match_region_crop(const GreyPair& pair, const cv::Rect& box, const MatcherOptions& options);
 
