@@ -219,6 +219,7 @@ class MavlinkSink final : public Node {
             .metric("link_losses", s.link_losses, "", Better::lower)
             .metric("releases", s.releases, "", Better::lower)
             .metric("refusals", s.refusals, "", Better::lower)
+            .metric("temporary_rejections", s.temporary_rejections, "", Better::lower)
             .quantity("arm_requests", s.arm_requests)
             .quantity("control_requests", s.control_requests)
             .metric("commands_resent", k.resent, "", Better::lower)

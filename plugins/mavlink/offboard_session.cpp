@@ -55,6 +55,19 @@ void OffboardSession::give_up(std::string why) {
   phase_ = Phase::refused;
 }
 
+void OffboardSession::refused(double now_s) {
+  if (exchange_.state() == CommandExchange::State::refused &&
+      exchange_.last_result() == mav::result_temporarily_rejected && asked_again_ < options_.retries) {
+    ++asked_again_;
+    ++counts_.temporary_rejections;
+    exchange_.reset();
+    phase_ = Phase::prestreaming;
+    phase_since_s_ = now_s;
+    return;
+  }
+  give_up(outcome(exchange_));
+}
+
 void OffboardSession::request_control(double now_s, const AutopilotState& autopilot) {
   if (autopilot.external_control) {
     phase_ = Phase::engaged;
@@ -97,7 +110,7 @@ void OffboardSession::step(double now_s, const AutopilotState& autopilot) {
         request_control(now_s, autopilot);
       } else if (exchange_.state() == CommandExchange::State::refused ||
                  exchange_.state() == CommandExchange::State::timed_out) {
-        give_up(outcome(exchange_));
+        refused(now_s);
       }
       return;
     case Phase::requesting_control:
@@ -108,7 +121,7 @@ void OffboardSession::step(double now_s, const AutopilotState& autopilot) {
         give_up("the mode request was accepted but the heartbeats never showed the mode");
       } else if (exchange_.state() == CommandExchange::State::refused ||
                  exchange_.state() == CommandExchange::State::timed_out) {
-        give_up(outcome(exchange_));
+        refused(now_s);
       }
       return;
     case Phase::engaged:

@@ -5,6 +5,9 @@
 // control mode; then fly. A heartbeat lost longer than the timeout stops the commanding and, when
 // it comes back, starts again from the pre-stream. If the autopilot leaves the mode itself (the
 // pilot's switch, its own failsafe) the session does not ask again: the pilot's choice stands.
+// A request the autopilot rejects only for now (MAV_RESULT_TEMPORARILY_REJECTED: PX4 when the
+// stream it saw is a little short of its second) streams on for another pre-stream and asks
+// again, up to `retries` times; any other refusal is final.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -35,8 +38,9 @@ struct SessionCounts {
   std::uint64_t link_losses = 0;  ///< heartbeat lost longer than the timeout
   std::uint64_t control_requests = 0;
   std::uint64_t arm_requests = 0;
-  std::uint64_t refusals = 0;  ///< an arm or mode request refused or unanswered
-  std::uint64_t releases = 0;  ///< the autopilot left the mode while engaged
+  std::uint64_t refusals = 0;              ///< an arm or mode request refused or unanswered, not asked again
+  std::uint64_t temporary_rejections = 0;  ///< asked again after a pre-stream
+  std::uint64_t releases = 0;              ///< the autopilot left the mode while engaged
 };
 
 class OffboardSession {
@@ -77,6 +81,8 @@ class OffboardSession {
  private:
   void request_control(double now_s, const AutopilotState& autopilot);
   void give_up(std::string why);
+  /// After a refusal of the arm or mode request: asks again later or gives up.
+  void refused(double now_s);
 
   SessionOptions options_;
   CommandExchange exchange_;
@@ -84,6 +90,7 @@ class OffboardSession {
   double phase_since_s_ = 0.0;
   std::string refusal_;
   SessionCounts counts_;
+  int asked_again_ = 0;
 };
 
 }  // namespace kestrel::mavlink

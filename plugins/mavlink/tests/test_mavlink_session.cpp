@@ -120,3 +120,30 @@ TEST(OffboardSession, ARefusalOrSilenceIsReportedAndNotRepeated) {
   EXPECT_EQ(silent.phase(), Phase::refused);
   EXPECT_THAT(silent.refusal(), ::testing::HasSubstr("had no answer"));
 }
+
+TEST(OffboardSession, ATemporaryRejectionStreamsOnAndAsksAgainUpToTheRetries) {
+  SessionOptions o;
+  o.retries = 2;
+  OffboardSession s(o);
+  s.step(0.0, px4(true));
+  s.step(1.0, px4(true));
+  for (int rejection = 1; rejection <= 2; ++rejection) {
+    const double t = 1.0 + 1.1 * (rejection - 1);
+    ASSERT_TRUE(s.command_due(t)) << "request " << rejection;
+    s.on_ack(ack(mav::cmd_do_set_mode, mav::result_temporarily_rejected));
+    s.step(t + 0.05, px4(true));
+    EXPECT_EQ(s.phase(), Phase::prestreaming) << "a stream a little short: another pre-stream";
+    EXPECT_TRUE(s.streaming());
+    EXPECT_FALSE(s.command_due(t + 0.5)) << "nothing asked within the pre-stream";
+    s.step(t + 1.1, px4(true));
+    EXPECT_EQ(s.phase(), Phase::requesting_control);
+  }
+  EXPECT_EQ(s.counts().temporary_rejections, 2u);
+  EXPECT_EQ(s.counts().control_requests, 3u);
+  ASSERT_TRUE(s.command_due(3.3));
+  s.on_ack(ack(mav::cmd_do_set_mode, mav::result_temporarily_rejected));
+  s.step(3.4, px4(true));
+  EXPECT_EQ(s.phase(), Phase::refused) << "the retries spent";
+  EXPECT_THAT(s.refusal(), ::testing::HasSubstr("refused (MAV_RESULT 1)"));
+  EXPECT_EQ(s.counts().refusals, 1u);
+}
