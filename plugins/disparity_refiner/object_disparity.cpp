@@ -88,32 +88,63 @@ int drop_background(const cv::Mat& left, const cv::Mat& right, ObjectMask& mask,
   const double object = mask.sgbm_disparity;
   const double farthest_behind = object - o.gap_px;
   if (farthest_behind < 0) return 0;  // nothing can be told apart from the object
-  std::vector<cv::Point> drop;
+  // The pixels judged: the whole window, at every candidate, inside both images. (Bilinear
+  // samples read one pixel to the right of where they fall.)
+  std::vector<cv::Point> judged;
+  cv::Rect reach;
   for (int y = 0; y < mask.pixels.rows; ++y)
     for (int x = 0; x < mask.pixels.cols; ++x) {
       if (!mask.pixels.at<std::uint8_t>(y, x)) continue;
       const int u = mask.roi.x + x, v = mask.roi.y + y;
-      // The whole window, at every candidate, inside both images.
-      // (Bilinear samples read one pixel to the right of where they fall.)
       if (v - r < 0 || v + r >= left.rows || u + r + 1 >= left.cols || u - r - object - 1 < 0) continue;
-      double own = 0.0;
-      for (int j = -r; j <= r; ++j)
-        for (int i = -r; i <= r; ++i)
-          own += std::abs(left.at<float>(v + j, u + i) - sample(right, u + i - object, v + j));
-      double best_behind = std::numeric_limits<double>::infinity();
-      // Half-pixel steps: far backgrounds have fractional disparities.
-      for (double d = 0.0; d <= farthest_behind; d += 0.5) {
-        double cost = 0.0;
-        for (int j = -r; j <= r && cost < best_behind; ++j)
-          for (int i = -r; i <= r; ++i)
-            cost += std::abs(left.at<float>(v + j, u + i) - sample(right, u + i - d, v + j));
-        best_behind = std::min(best_behind, cost);
-      }
-      if (best_behind < o.ratio * own) drop.emplace_back(x, y);
+      judged.emplace_back(x, y);
+      reach |= cv::Rect(u - r, v - r, 2 * r + 1, 2 * r + 1);
     }
-  for (const auto& p : drop) mask.pixels.at<std::uint8_t>(p) = 0;
-  mask.count -= static_cast<int>(drop.size());
-  return static_cast<int>(drop.size());
+  if (judged.empty()) return 0;
+  // |left - right shifted by d| over every window at once: neighbouring windows overlap, so each
+  // difference is sampled once per candidate instead of once per window that holds it. The sums
+  // below add the same terms in the same order as a window at a time would.
+  cv::Mat difference(reach.size(), CV_32F);
+  const auto differences_at = [&](double d) {
+    for (int y = 0; y < reach.height; ++y) {
+      const int v = reach.y + y;
+      const float* l = left.ptr<float>(v);
+      float* out = difference.ptr<float>(y);
+      for (int x = 0; x < reach.width; ++x) {
+        const int u = reach.x + x;
+        out[x] = std::abs(l[u] - sample(right, u - d, v));
+      }
+    }
+  };
+  // A window's cost, given up once it reaches `bound` (it can no longer be the least).
+  const auto window_cost = [&](const cv::Point& p, double bound) {
+    const int x0 = mask.roi.x + p.x - reach.x, y0 = mask.roi.y + p.y - reach.y;
+    double cost = 0.0;
+    for (int j = -r; j <= r && cost < bound; ++j) {
+      const float* row = difference.ptr<float>(y0 + j);
+      for (int i = -r; i <= r; ++i) cost += row[x0 + i];
+    }
+    return cost;
+  };
+  differences_at(object);
+  std::vector<double> own(judged.size());
+  for (std::size_t k = 0; k < judged.size(); ++k)
+    own[k] = window_cost(judged[k], std::numeric_limits<double>::infinity());
+  std::vector<double> best_behind(judged.size(), std::numeric_limits<double>::infinity());
+  // Half-pixel steps: far backgrounds have fractional disparities.
+  for (double d = 0.0; d <= farthest_behind; d += 0.5) {
+    differences_at(d);
+    for (std::size_t k = 0; k < judged.size(); ++k)
+      best_behind[k] = std::min(best_behind[k], window_cost(judged[k], best_behind[k]));
+  }
+  int dropped = 0;
+  for (std::size_t k = 0; k < judged.size(); ++k)
+    if (best_behind[k] < o.ratio * own[k]) {
+      mask.pixels.at<std::uint8_t>(judged[k]) = 0;
+      ++dropped;
+    }
+  mask.count -= dropped;
+  return dropped;
 }
 
 std::optional<double> robust_mean_disparity(const ObjectMask& mask) {
