@@ -84,7 +84,8 @@ TEST(ClosedLoop, TheInterceptionIsReproducibleBitForBit) {
   EXPECT_GT(a.report.at("aim").at("target_frames").get<int>(), 0);  // it did engage
 }
 
-// Detections blacked out for 2 s while the hunter closes in: the aim flies on for its timeout,
+// Detections blacked out for 2 s while the hunter closes in (the intruder is first seen about
+// 2 s in, and caught about a second later without the blackout): the aim flies on for its timeout,
 // then backs off; when detections return the tracker starts a new track, the aim re-acquires
 // it, and the intercept still ends in a capture. The graph is GRAPH (sim_intercept.yaml or
 // sim_intercept_fast.yaml) with detection_dropout between the height gate and the tracker (its
@@ -100,7 +101,7 @@ void expect_a_blackout_to_make_the_hunter_hold_then_reacquire(const std::string&
     yaml.replace(at, from.size(), to);
   };
   replace("  - id: tracker\n",
-          "  - {id: blackout, type: detection_dropout, params: {first_s: 3.0, frames: 60, period_s: 1000}}\n"
+          "  - {id: blackout, type: detection_dropout, params: {first_s: 2.4, frames: 60, period_s: 1000}}\n"
           "  - id: tracker\n");
   replace("  - {from: gate.detections, to: tracker.detections, policy: fifo 64}",
           "  - {from: gate.detections, to: blackout.detections, policy: fifo 64}\n"
@@ -122,7 +123,7 @@ void expect_a_blackout_to_make_the_hunter_hold_then_reacquire(const std::string&
   EXPECT_EQ(r.report.at("hunter").at("touchdowns"), 0);
   EXPECT_EQ(r.report.at("control").at("captured"), true);
   ASSERT_TRUE(r.report.at("control").at("time_to_capture_s").is_number());
-  EXPECT_GT(r.report.at("control").at("time_to_capture_s").get<double>(), 5.0);  // after the blackout
+  EXPECT_GT(r.report.at("control").at("time_to_capture_s").get<double>(), 4.4);  // after the blackout
 }
 
 }  // namespace
