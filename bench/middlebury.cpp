@@ -5,11 +5,15 @@
 // object-level refiner (disparity_refiner) on real texture: square patches where the truth is
 // known and nearly flat in disparity are handed to it as objects, and its sub-pixel disparity is
 // compared with the truth's mean there, beside the SGBM median and robust mean of the same
-// pixels. Prints one JSON object: per matcher bad-1, bad-2, the median error, density and ms per
-// pair, and the patches' errors; writes the disparities and the bad-2 map as images to OUTDIR.
-// scripts/middlebury runs it on both pairs.
+// pixels. Then stereo_depth's foreground segmentation (foreground_gap_m 0.5, as the graphs set it)
+// on its disparity and on the truth's, with the pair's calibration (Middlebury calib.txt: doffs
+// is added to each disparity, so that disparity gives depth), compared pixel by pixel where the
+// truth is known. Prints one JSON object: per matcher bad-1, bad-2, the median error, density and
+// ms per pair, the patches' errors and the foreground's agreement; writes the disparities, the
+// bad-2 map and the two foreground masks as images to OUTDIR. scripts/middlebury runs it on both
+// pairs.
 //
-// Usage: kestrel_middlebury NAME LEFT RIGHT TRUTH NUM_DISPARITIES OUTDIR [REPEATS]
+// Usage: kestrel_middlebury NAME LEFT RIGHT TRUTH NUM_DISPARITIES OUTDIR REPEATS CALIB
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -18,6 +22,7 @@
 #include <functional>
 #include <iostream>
 #include <kestrel/error.hpp>
+#include <kestrel/stereo_calibration/middlebury_calibration.hpp>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -25,6 +30,7 @@
 #include <vector>
 
 #include "disparity_score.hpp"
+#include "foreground_mask.hpp"
 #include "object_disparity.hpp"
 #include "stereo_matching.hpp"
 #include "striped_matcher.hpp"
@@ -128,11 +134,45 @@ nlohmann::json refine_patches(const cv::Mat& left, const cv::Mat& right, const c
           {"sgbm_robust_mean", error_summary(sgbm_mean)}};
 }
 
+// A disparity map (CV_16S, 1/16 px) of the raw pair as the pair moved onto a common principal
+// point gives it: doffs added to every match, so that disparity gives depth.
+cv::Mat with_doffs(const cv::Mat& disparity16, double doffs) {
+  cv::Mat out = disparity16.clone();
+  const int shift = static_cast<int>(std::lround(16.0 * doffs));
+  out.forEach<short>([shift](short& d, const int*) {
+    if (d > 0) d = static_cast<short>(d + shift);
+  });
+  return out;
+}
+
+// The left image in grey with the foreground in orange.
+cv::Mat foreground_picture(const cv::Mat& left, const cv::Mat& mask) {
+  cv::Mat grey, tinted;
+  cv::cvtColor(left, grey, cv::COLOR_GRAY2BGR);
+  cv::addWeighted(grey, 0.4, cv::Mat(grey.size(), grey.type(), cv::Scalar(0, 140, 255)), 0.6, 0.0, tinted);
+  tinted.copyTo(grey, mask);
+  return grey;
+}
+
+// The foreground segmentation on the matched disparity against the same segmentation on the
+// truth, over the pixels the truth knows: how much of the picture each marks, and their overlap.
+nlohmann::json foreground_agreement(const cv::Mat& matched, const cv::Mat& on_truth, const cv::Mat& known) {
+  const cv::Mat a = matched & known, b = on_truth & known;
+  const double both = cv::countNonZero(a & b), either = cv::countNonZero(a | b);
+  const double n_a = cv::countNonZero(a), n_b = cv::countNonZero(b), n_known = cv::countNonZero(known);
+  const auto ratio = [](double x, double y) -> nlohmann::json { return y > 0 ? nlohmann::json(x / y) : nullptr; };
+  return {{"share_matched", ratio(n_a, n_known)},
+          {"share_truth", ratio(n_b, n_known)},
+          {"precision", ratio(both, n_a)},
+          {"recall", ratio(both, n_b)},
+          {"iou", ratio(both, either)}};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 7) {
-    std::cerr << "usage: kestrel_middlebury NAME LEFT RIGHT TRUTH NUM_DISPARITIES OUTDIR [REPEATS]\n";
+  if (argc != 9) {
+    std::cerr << "usage: kestrel_middlebury NAME LEFT RIGHT TRUTH NUM_DISPARITIES OUTDIR REPEATS CALIB\n";
     return 2;
   }
   try {
@@ -145,7 +185,8 @@ int main(int argc, char** argv) {
           fmt::format("the truth is {}x{}, the images {}x{}", truth.cols, truth.rows, left.cols, left.rows));
     MatcherOptions options;  // stereo_depth's defaults: the paper's SGBM, block 7
     options.num_disparities = std::stoi(argv[5]);
-    const int repeats = argc > 7 ? std::stoi(argv[7]) : 5;
+    const int repeats = std::stoi(argv[7]);
+    const auto calib = kestrel::calibration::load_middlebury_calibration(argv[8]);
 
     cv::Mat plain16, striped16, coarse16;
     const cv::Ptr<cv::StereoMatcher> plain = make_matcher(options);
@@ -175,11 +216,32 @@ int main(int argc, char** argv) {
                           {"stereo_depth", to_json(score_disparity(striped_px, truth), striped_ms)},
                           {"stereo_depth_downscale_2", to_json(score_disparity(coarse_px, truth), coarse_ms)},
                           {"refiner_patches", refine_patches(left, right, plain_px, truth, 24, 1.0)}};
-    cv::imwrite(out + "/" + name + "_stereo_depth.png", colourise_disparity(striped16, options.num_disparities));
-    cv::imwrite(out + "/" + name + "_bad2.png", bad2_map(striped_px, truth));
+
+    // The foreground as the graphs segment it, on the matched disparity and on the truth's.
+    kestrel::msg::StereoCalibration camera;
+    camera.width = left.cols;
+    camera.height = left.rows;
+    camera.fx = calib.cam0[0];
+    camera.fy = calib.cam0[4];
+    camera.cx = calib.cam0[2];
+    camera.cy = calib.cam0[5];
+    camera.baseline_m = calib.baseline_mm / 1000.0;
+    ForegroundOptions foreground;
+    foreground.gap_m = 0.5;
+    foreground.unseen_left_columns = options.min_disparity + options.num_disparities;
     cv::Mat truth16;
     truth.convertTo(truth16, CV_16S, 16.0);
     truth16.setTo(-1, truth != truth);
+    const cv::Mat known = truth == truth;  // only NaN (unknown) differs from itself
+    const cv::Mat matched_mask = foreground_mask(with_doffs(striped16, calib.doffs), camera, foreground);
+    const cv::Mat truth_mask = foreground_mask(with_doffs(truth16, calib.doffs), camera, foreground);
+    result["foreground"] = foreground_agreement(matched_mask, truth_mask, known);
+    result["foreground"]["gap_m"] = foreground.gap_m;
+    cv::Mat pictures;
+    cv::hconcat(foreground_picture(left, matched_mask), foreground_picture(left, truth_mask), pictures);
+    cv::imwrite(out + "/" + name + "_foreground.png", pictures);
+    cv::imwrite(out + "/" + name + "_stereo_depth.png", colourise_disparity(striped16, options.num_disparities));
+    cv::imwrite(out + "/" + name + "_bad2.png", bad2_map(striped_px, truth));
     cv::imwrite(out + "/" + name + "_truth.png", colourise_disparity(truth16, options.num_disparities));
     std::cout << result.dump() << "\n";
   } catch (const std::exception& e) {
