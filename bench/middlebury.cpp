@@ -23,6 +23,7 @@
 #include <iostream>
 #include <kestrel/error.hpp>
 #include <kestrel/stereo_calibration/middlebury_calibration.hpp>
+#include <kestrel/stereo_calibration/stereo_rectifier.hpp>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -218,14 +219,9 @@ int main(int argc, char** argv) {
                           {"refiner_patches", refine_patches(left, right, plain_px, truth, 24, 1.0)}};
 
     // The foreground as the graphs segment it, on the matched disparity and on the truth's.
-    kestrel::msg::StereoCalibration camera;
-    camera.width = left.cols;
-    camera.height = left.rows;
-    camera.fx = calib.cam0[0];
-    camera.fy = calib.cam0[4];
-    camera.cx = calib.cam0[2];
-    camera.cy = calib.cam0[5];
-    camera.baseline_m = calib.baseline_mm / 1000.0;
+    const auto [left_info, right_info] = calib.camera_infos();
+    const kestrel::msg::StereoCalibration camera =
+        kestrel::calibration::StereoRectifier(left_info, right_info).calibration();
     ForegroundOptions foreground;
     foreground.gap_m = 0.5;
     foreground.unseen_left_columns = options.min_disparity + options.num_disparities;
