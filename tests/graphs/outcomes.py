@@ -215,7 +215,7 @@ OUTCOMES = {
         ("r['control']['captured'] is True", "the intruder is caught"),
         ("r['control']['time_to_capture_s'] <= 20.0", "within 20 s"),
         ("r['hunter']['touchdowns'] == 0 and r['controller']['faults'] == 0", "no crash, no fault"),
-        ("r['camera']['detected'] >= 0.98 * r['camera']['in_view']", "the fitted recall is about 1 within 8 m"),
+        ("r['camera']['detected'] >= 0.98 * r['camera']['in_view']", "the fitted recall, 0.98 or more to 15 m"),
         ("d['rmse_m']['z'] <= 0.15 and d['rmse_m']['x'] <= 0.06", "errors of the rendered chain's size"),
     ]),
     # The closed loop flown through MAVLink in realtime: the sink pre-streams for 1 s, arms and
