@@ -74,7 +74,7 @@ TSAN_ENV := TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:suppressions=$(
 ASAN_BUILD := build-asan
 ASAN_CMAKE := $(SAN_CMAKE) -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 \
   -DKESTREL_SANITIZE=address,undefined,float-cast-overflow -DKESTREL_BUILD_FUZZ=ON
-FUZZ_SECONDS ?= 20
+FUZZ_SECONDS ?= 10
 
 # The whole test suite under AddressSanitizer (with LeakSanitizer) and UndefinedBehaviorSanitizer,
 # built with clang-14 (a third faster to build than GCC, and a second compiler's warnings), but

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # Label `slurm`: kestrel's Slurm backend against a real Slurm 22.05 cluster of one node that the
 # test starts on 127.0.0.1 (slurm_cluster.sh).
-# - a 20-case sweep (graphs/hover_step.yaml) run here and as a Slurm job array gives the same
+# - a 10-case sweep (graphs/hover_step.yaml) run here and as a Slurm job array gives the same
 #   sweep.csv, number for number, and the same report from every run (wall time aside);
 # - a run that fails and a task cancelled before it ran are reported with what Slurm says of them
 #   and counted as failed, and `kestrel collect` says so again when run twice (idempotent);
-# - a 20-engagement capture benchmark through Slurm gives the local run's capture.json.
+# - a 10-engagement capture benchmark through Slurm gives the local run's capture.json.
 # Usage: check_slurm_backend.sh WORKDIR   (KESTREL: the kestrel binary; run from the source tree)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -21,8 +21,8 @@ python3 - "$work/cases.csv" <<'PY'
 import sys
 with open(sys.argv[1], "w") as f:
     f.write("setpoint.step_yaw_deg,seed\n")
-    for i in range(20):
-        f.write(f"{5 * i},{i + 1}\n")
+    for i in range(10):
+        f.write(f"{10 * i},{i + 1}\n")
 PY
 "$kestrel" sweep "$graph" --cases "$work/cases.csv" --duration 8 --report "$work/local" > /dev/null
 "$kestrel" sweep "$graph" --cases "$work/cases.csv" --duration 8 --report "$work/slurm" \
@@ -38,17 +38,17 @@ def rows(name):
     with open(os.path.join(work, name, "sweep.csv")) as f:
         return [{k: v for k, v in r.items() if not timing(k)} for r in csv.DictReader(f)]
 local, slurm = rows("local"), rows("slurm")
-assert len(local) == len(slurm) == 20, (len(local), len(slurm))
+assert len(local) == len(slurm) == 10, (len(local), len(slurm))
 assert local == slurm, next((a, b) for a, b in zip(local, slurm) if a != b)
 assert all(r["exit_code"] == "0" for r in slurm)
 def report(name, run):
     r = json.load(open(os.path.join(work, name, "runs", run, "report.json")))
     return {k: v for k, v in r.items() if not timing(k)}
 runs = sorted(os.listdir(os.path.join(work, "local", "runs")))
-assert runs == sorted(os.listdir(os.path.join(work, "slurm", "runs"))) and len(runs) == 20
+assert runs == sorted(os.listdir(os.path.join(work, "slurm", "runs"))) and len(runs) == 10
 for run in runs:
     assert report("local", run) == report("slurm", run), run
-print("sweep: 20 runs through Slurm, the same numbers as here")
+print("sweep: 10 runs through Slurm, the same numbers as here")
 PY
 
 # A run that fails (case 2: its intruder's file is missing) is reported with what Slurm says of
@@ -85,8 +85,8 @@ grep -qF "Slurm task ${array}_2: FAILED" "$work/collect-again.out"
 echo "a failed run and a cancelled task: reported with Slurm's word and counted, again on a second collect"
 
 # The capture benchmark through Slurm: the same capture.json as here.
-KESTREL=$kestrel scripts/capture-benchmark "$work/capture-local" --seeds 20 --rendered 0 --duration 12 > /dev/null
-KESTREL=$kestrel scripts/capture-benchmark "$work/capture-slurm" --seeds 20 --rendered 0 --duration 12 \
+KESTREL=$kestrel scripts/capture-benchmark "$work/capture-local" --seeds 10 --rendered 0 --duration 12 > /dev/null
+KESTREL=$kestrel scripts/capture-benchmark "$work/capture-slurm" --seeds 10 --rendered 0 --duration 12 \
   --backend slurm > /dev/null
 python3 - "$work" <<'PY'
 import json, os, sys
@@ -96,5 +96,5 @@ def load(name):
     c.pop("wall_time_s", None)
     return json.dumps(c, sort_keys=True)
 assert load("capture-local") == load("capture-slurm")
-print("capture benchmark: 20 engagements through Slurm, the same capture.json as here")
+print("capture benchmark: 10 engagements through Slurm, the same capture.json as here")
 PY
