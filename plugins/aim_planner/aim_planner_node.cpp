@@ -27,6 +27,7 @@
 
 #include "fire_decision.hpp"
 #include "motion_axis.hpp"
+#include "oscillation.hpp"
 #include "target_estimate.hpp"
 
 namespace kestrel::aim {
@@ -37,7 +38,7 @@ using guidance::AimReference;
 
 struct AimPlannerConfig {
   enum class WhenLost { hold, search, back_off };
-  enum class ShotPrediction { constant_velocity, constant_acceleration, model };
+  enum class ShotPrediction { constant_velocity, constant_acceleration, model, oscillation };
   enum class AimTilt { level, target, hunter };
   Eigen::Vector3d aim_point_m{0.0, 1.0, 2.0};
   Eigen::Vector3d net_open_point_m{0.0, 1.0, 2.0};
@@ -78,6 +79,10 @@ struct AimPlannerConfig {
   double shot_acceleration_share = 0.75;
   double shot_covariance_scale = 0.25;
   ShotPrediction shot_prediction = ShotPrediction::constant_velocity;
+  double oscillation_window_s = 2.5;
+  double oscillation_min_omega_rad_s = 0.5;
+  double oscillation_max_omega_rad_s = 8.0;
+  double oscillation_min_improvement = 2.0;
   double dwell_s = 0.5;
   double motion_axis_time_s = 0.0;
   AimTilt aim_tilt = AimTilt::level;
@@ -221,11 +226,31 @@ class AimPlannerNode final : public Node {
     c.choice("shot_prediction", &C::shot_prediction,
              {{"cv", C::ShotPrediction::constant_velocity},
               {"ca", C::ShotPrediction::constant_acceleration},
-              {"model", C::ShotPrediction::model}})
+              {"model", C::ShotPrediction::model},
+              {"oscillation", C::ShotPrediction::oscillation}})
         .describe(
             "the target's motion while the net flies, for the predicted miss: constant velocity, the estimate's "
-            "acceleration held, or the estimate's own model (imm: each model's prediction by its probability, the "
-            "coordinated turn's among them)");
+            "acceleration held, the estimate's own model (imm: each model's prediction by its probability, the "
+            "coordinated turn's among them), or an oscillation about a centre fitted axis by axis to its recent "
+            "motion (oscillation_* parameters; turns, figure-8s, lines flown back and forth)");
+    c.param("oscillation_window_s", &C::oscillation_window_s)
+        .with_unit("s")
+        .range(0.1, 60.0)
+        .describe("shot_prediction oscillation: the recent motion the oscillation is fitted to");
+    c.param("oscillation_min_omega_rad_s", &C::oscillation_min_omega_rad_s)
+        .with_unit("rad/s")
+        .range(0.05, 100.0)
+        .describe("shot_prediction oscillation: the slowest oscillation looked for (its angular frequency)");
+    c.param("oscillation_max_omega_rad_s", &C::oscillation_max_omega_rad_s)
+        .with_unit("rad/s")
+        .range(0.05, 100.0)
+        .describe("shot_prediction oscillation: the quickest oscillation looked for");
+    c.param("oscillation_min_improvement", &C::oscillation_min_improvement)
+        .range(1.0, 1e6)
+        .describe(
+            "shot_prediction oscillation: an axis oscillates only where the sinusoid's mean squared residual is this "
+            "many times below a parabola's (constant acceleration) over the same sightings; elsewhere it is predicted "
+            "at constant velocity");
     c.param("fire_probability", &C::fire_probability)
         .range(0.0, 1.0)
         .describe(
@@ -322,6 +347,9 @@ class AimPlannerNode final : public Node {
         .describe(
             "how the hunter closes on the target before the terminal phase aligns the net: hold_aim (the paper's: "
             "terminal from the start), pursuit, pn, frpn, predictive");
+    c.rule("oscillation_min_omega_rad_s < oscillation_max_omega_rad_s",
+           {"oscillation_min_omega_rad_s", "oscillation_max_omega_rad_s"},
+           [](const C& k) { return k.oscillation_min_omega_rad_s < k.oscillation_max_omega_rad_s; });
     c.rule("last_net_radius_m <= capture_radius_m", {"last_net_radius_m", "capture_radius_m"},
            [](const C& k) { return k.last_net_radius_m <= k.capture_radius_m; });
     // The aim plans only what the airframe flies.
@@ -395,7 +423,10 @@ class AimPlannerNode final : public Node {
     std::optional<double> miss, probability, spread;
     std::optional<PredictedShot> shot;
     std::optional<ShotUncertainty> uncertainty;
-    if (estimate_ && t - last_seen_ > cfg_.target_timeout_s) estimate_.reset();  // too old to predict from
+    if (estimate_ && t - last_seen_ > cfg_.target_timeout_s) {  // too old to predict from
+      estimate_.reset();
+      oscillation_.reset();
+    }
     if (estimate_) estimate_->predict(dt);
     if (target) {
       // The target is estimated again in the world frame, from what was seen of it there: its
@@ -415,6 +446,9 @@ class AimPlannerNode final : public Node {
         estimate_.emplace(
             intruder, TargetFilterConfig{cfg_.target_filter, cfg_.target_q, cfg_.target_q_velocity, cfg_.target_q_turn,
                                          cfg_.target_switch_probability, cfg_.target_r});
+        if (cfg_.shot_prediction == AimPlannerConfig::ShotPrediction::oscillation)
+          oscillation_.emplace(OscillationConfig{cfg_.oscillation_window_s, cfg_.oscillation_min_omega_rad_s,
+                                                 cfg_.oscillation_max_omega_rad_s, cfg_.oscillation_min_improvement});
         estimate_since_ = t;
         guidance_->reset();
         motion_axis_.reset();
@@ -422,6 +456,7 @@ class AimPlannerNode final : public Node {
       } else {
         estimate_->update(intruder);
       }
+      if (oscillation_) oscillation_->add(t, intruder);
       const Eigen::VectorXd x = estimate_->state();
       const double smoothing = cfg_.aim_tilt_time_s > 0.0 ? dt / (cfg_.aim_tilt_time_s + dt) : 1.0;
       tilt_acceleration_ += smoothing * (Eigen::Vector3d(x.segment<3>(6)) - tilt_acceleration_);
@@ -448,7 +483,7 @@ class AimPlannerNode final : public Node {
       const Eigen::Matrix3d ahead = estimate_->position_covariance_after(shot->time_s);
       spread = std::sqrt(std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(ahead).eigenvalues().maxCoeff()));
       uncertainty = ShotUncertainty{cfg_.shot_covariance_scale * estimate_->covariance().topLeftCorner<6, 6>(), lead,
-                                    cfg_.shot_acceleration_share * x.segment<3>(6),
+                                    expected_shot_acceleration(x),
                                     cfg_.shot_manoeuvre_m_s2 + cfg_.shot_turn_rate_rad_s * x.segment<3>(3).norm()};
       // Every frame only when it decides the shot; otherwise once, for the shot's record.
       if (cfg_.fire_probability > 0.0) probability = hit_probability(*shot, *uncertainty, cfg_.net_radius_m);
@@ -507,7 +542,7 @@ class AimPlannerNode final : public Node {
                             {"spread_m", *spread},
                             {"predicted_time_s", shot->time_s},
                             {"estimate_age_s", t - estimate_since_},
-                            {"prediction", prediction_record(*shot, uncertainty->lead_s, *estimate_)}};
+                            {"prediction", prediction_record(*shot, uncertainty->lead_s, *estimate_, oscillation_)}};
       if (const auto mu = estimate_->model_probabilities(); !mu.empty()) record["model_probabilities"] = mu;
       shots_.push_back(std::move(record));
       ctx.publish(kFire, msg::NetFire{tracks->stamp, target->id, *error});
@@ -521,6 +556,14 @@ class AimPlannerNode final : public Node {
   PredictedShot predict_target_shot(const geometry::CameraPose& camera, const Eigen::Vector3d& hunter_velocity,
                                     const Eigen::VectorXd& x, double lead) const {
     using P = AimPlannerConfig::ShotPrediction;
+    if (oscillation_)  // the oscillating axes as fitted, the others at constant velocity
+      return predict_shot(net_, camera, hunter_velocity, [&](double tau) {
+        Eigen::Vector3d p = x.head<3>() + x.segment<3>(3) * (lead + tau);
+        for (int axis = 0; axis < 3; ++axis)
+          if (const auto& o = oscillation_->axes()[axis])
+            p[axis] = OscillationPredictor::position_after(*o, lead + tau);
+        return p;
+      });
     if (cfg_.shot_prediction == P::model)
       return predict_shot(net_, camera, hunter_velocity,
                           [&](double tau) { return estimate_->position_after(lead + tau); });
@@ -533,8 +576,10 @@ class AimPlannerNode final : public Node {
   // What the shot's probability was computed from, so that its error model can be fitted again
   // to the shots' outcomes (scripts/fit-shot-model): the predicted miss over the open window
   // ([tau, x, y, z] rows), the estimate's position-velocity covariance (before
-  // shot_covariance_scale) and its state ([x y z vx vy vz ax ay az], world).
-  static nlohmann::json prediction_record(const PredictedShot& shot, double lead_s, const TargetEstimate& estimate) {
+  // shot_covariance_scale) and its state ([x y z vx vy vz ax ay az], world); with an oscillation, the
+  // axes it predicted and their angular frequencies.
+  static nlohmann::json prediction_record(const PredictedShot& shot, double lead_s, const TargetEstimate& estimate,
+                                          const std::optional<OscillationPredictor>& oscillation) {
     nlohmann::json path = nlohmann::json::array(), covariance = nlohmann::json::array();
     for (const MissAt& m : shot.path) path.push_back({m.tau_s, m.miss.x(), m.miss.y(), m.miss.z()});
     const Eigen::MatrixXd p = estimate.covariance();
@@ -544,10 +589,30 @@ class AimPlannerNode final : public Node {
       covariance.push_back(std::move(row));
     }
     const Eigen::VectorXd state = estimate.state();
-    return {{"lead_s", lead_s},
-            {"miss_path_m", std::move(path)},
-            {"position_velocity_covariance", std::move(covariance)},
-            {"estimate", std::vector<double>(state.data(), state.data() + state.size())}};
+    nlohmann::json record{{"lead_s", lead_s},
+                          {"miss_path_m", std::move(path)},
+                          {"position_velocity_covariance", std::move(covariance)},
+                          {"estimate", std::vector<double>(state.data(), state.data() + state.size())}};
+    if (oscillation) {
+      nlohmann::json axes = nlohmann::json::array(), omega = nlohmann::json::array();
+      for (const auto& o : oscillation->axes()) {
+        axes.push_back(o.has_value());
+        omega.push_back(o ? nlohmann::json(o->omega_rad_s) : nlohmann::json());
+      }
+      record["oscillating_axes"] = std::move(axes);
+      record["oscillation_omega_rad_s"] = std::move(omega);
+    }
+    return record;
+  }
+
+  // The share of the estimate's acceleration the shot's probability expects to go on while the net
+  // flies, but on the axes an oscillation predicts: their prediction already turns.
+  Eigen::Vector3d expected_shot_acceleration(const Eigen::VectorXd& x) const {
+    Eigen::Vector3d a = cfg_.shot_acceleration_share * x.segment<3>(6);
+    if (oscillation_)
+      for (int axis = 0; axis < 3; ++axis)
+        if (oscillation_->axes()[axis]) a[axis] = 0.0;
+    return a;
   }
 
   // The hunter's acceleration while it holds the aim (aim_tilt), which tilts its camera: the
@@ -685,7 +750,8 @@ class AimPlannerNode final : public Node {
   Eigen::Vector3d tilt_acceleration_ = Eigen::Vector3d::Zero();  // aim_tilt target: the low-passed estimate
   std::optional<AimPose> goal_;
   std::optional<TargetEstimate> estimate_;
-  nlohmann::json shots_ = nlohmann::json::array();  // each shot: when, its predicted miss and probability
+  std::optional<OscillationPredictor> oscillation_;  // shot_prediction oscillation
+  nlohmann::json shots_ = nlohmann::json::array();   // each shot: when, its predicted miss and probability
   std::uint64_t target_id_ = 0;
   Eigen::Vector3d goal_velocity_ = Eigen::Vector3d::Zero();
   std::optional<double> last_t_, first_fire_;

@@ -217,6 +217,8 @@ OUTCOMES = {
         ("r['hunter']['touchdowns'] == 0 and r['controller']['faults'] == 0", "no crash, no fault"),
         ("r['camera']['detected'] >= 0.98 * r['camera']['in_view']", "the fitted recall, 0.98 or more to 15 m"),
         ("d['rmse_m']['z'] <= 0.15 and d['rmse_m']['x'] <= 0.06", "errors of the rendered chain's size"),
+        ("r['aim']['shots'] and all(len(s['prediction']['oscillating_axes']) == 3 for s in r['aim']['shots'])",
+         "each shot says which axes the oscillation predicted"),
     ]),
     # The closed loop flown through MAVLink in realtime: the sink pre-streams for 1 s, arms and
     # takes offboard before the hunter lifts off, so the capture comes about a second later than

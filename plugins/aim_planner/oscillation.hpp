@@ -1,0 +1,56 @@
+#pragma once
+// The target as an oscillator, axis by axis: a figure-8, an orbit, a patrol or a line flown back
+// and forth swings about a centre, p(t) = c + A cos(omega t) + B sin(omega t). Fitted to the last
+// `window_s` of sightings (least squares for c, A and B on a grid of omega), it predicts the turn
+// that the constant-velocity and constant-acceleration predictions cannot: on the capture
+// benchmark's figure-8s at 3-6 m/s the position 0.55 s ahead comes within 0.4 m 99 % of the time,
+// against 10 % at constant velocity (docs/control.md). An axis is taken to oscillate only where the
+// sinusoid fits its sightings at least `min_improvement` times better than a parabola (constant
+// acceleration) does; elsewhere there is no fit and the caller predicts as it would without one.
+#include <Eigen/Core>
+#include <array>
+#include <deque>
+#include <optional>
+
+namespace kestrel::aim {
+
+struct OscillationConfig {
+  double window_s = 2.5;         ///< the sightings the fit uses
+  double min_omega_rad_s = 0.5;  ///< the grid of angular frequencies, from
+  double max_omega_rad_s = 8.0;  ///< to
+  double min_improvement = 2.0;  ///< the sinusoid's mean squared residual, times this, below the parabola's
+  int min_sightings = 15;        ///< fewer in the window: no fit
+};
+
+/// One axis's oscillation, p(t) = centre + a cos(omega (t - t_ref)) + b sin(omega (t - t_ref)), with
+/// t_ref the newest sighting's time.
+struct AxisOscillation {
+  double centre = 0.0, a = 0.0, b = 0.0;
+  double omega_rad_s = 0.0;
+  double rms_residual_m = 0.0;
+};
+
+class OscillationPredictor {
+ public:
+  explicit OscillationPredictor(const OscillationConfig& config);
+  /// A sighting at time t (s, increasing); the fit is made again.
+  void add(double t, const Eigen::Vector3d& sighting);
+  /// Each axis's oscillation, none where the sightings are too few or no sinusoid fits them better than a
+  /// parabola.
+  const std::array<std::optional<AxisOscillation>, 3>& axes() const { return axes_; }
+  /// An oscillating axis's position `tau` seconds after the newest sighting.
+  static double position_after(const AxisOscillation& axis, double tau);
+
+ private:
+  void fit();
+
+  OscillationConfig cfg_;
+  struct Sighting {
+    double t;
+    Eigen::Vector3d position;
+  };
+  std::deque<Sighting> window_;
+  std::array<std::optional<AxisOscillation>, 3> axes_;
+};
+
+}  // namespace kestrel::aim
