@@ -8,15 +8,27 @@
 namespace kestrel::aim {
 
 namespace {
-// Least squares of z on the three columns of X (n x 3): the mean squared residual and the
-// coefficients, or none where X's columns are (nearly) dependent.
-std::optional<std::pair<double, Eigen::Vector3d>> least_squares(const Eigen::MatrixX3d& x, const Eigen::VectorXd& z) {
-  const Eigen::Matrix3d normal = x.transpose() * x;
-  const Eigen::LDLT<Eigen::Matrix3d> ldlt(normal);
-  if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().array() > 1e-9 * normal.trace()).all()) return std::nullopt;
-  const Eigen::Vector3d coefficients = ldlt.solve(x.transpose() * z);
-  return std::pair{(z - x * coefficients).squaredNorm() / static_cast<double>(z.size()), coefficients};
-}
+// Least squares on the three columns of X (n x 3), factorised once for every right-hand side that
+// shares them (the three axes at one angular frequency).
+class LeastSquares {
+ public:
+  explicit LeastSquares(const Eigen::MatrixX3d& x) : x_(x), normal_(x.transpose() * x), ldlt_(normal_) {
+    solvable_ = ldlt_.info() == Eigen::Success && (ldlt_.vectorD().array() > 1e-9 * normal_.trace()).all();
+  }
+  // The mean squared residual of z and the coefficients, or none where X's columns are (nearly)
+  // dependent.
+  std::optional<std::pair<double, Eigen::Vector3d>> fit(const Eigen::VectorXd& z) const {
+    if (!solvable_) return std::nullopt;
+    const Eigen::Vector3d coefficients = ldlt_.solve(x_.transpose() * z);
+    return std::pair{(z - x_ * coefficients).squaredNorm() / static_cast<double>(z.size()), coefficients};
+  }
+
+ private:
+  const Eigen::MatrixX3d& x_;
+  Eigen::Matrix3d normal_;
+  Eigen::LDLT<Eigen::Matrix3d> ldlt_;
+  bool solvable_ = false;
+};
 }  // namespace
 
 OscillationPredictor::OscillationPredictor(const OscillationConfig& config) : cfg_(config) {}
@@ -42,33 +54,42 @@ void OscillationPredictor::fit() {
   Eigen::MatrixX3d parabola(n, 3);
   parabola << Eigen::VectorXd::Ones(n), s, s.array().square().matrix();
   std::array<double, 3> parabola_residual{};
+  const LeastSquares parabola_fit(parabola);
   for (int axis = 0; axis < 3; ++axis) {
-    const auto fit = least_squares(parabola, positions.col(axis));
+    const auto fit = parabola_fit.fit(positions.col(axis));
     parabola_residual[axis] = fit ? fit->first : std::numeric_limits<double>::infinity();
   }
+  // A parabola within 5 mm leaves nothing to explain (a still or straight axis, no noise).
+  std::array<bool, 3> to_fit{};
+  for (int axis = 0; axis < 3; ++axis) to_fit[axis] = parabola_residual[axis] >= 0.005 * 0.005;
   // The sinusoid: for each omega on a geometric grid (4 % apart), c, A and B by least squares, then
-  // a finer grid (0.5 %) about the best.
+  // a finer grid (0.5 %) about each axis's best.
   std::array<std::optional<AxisOscillation>, 3> best;
   Eigen::MatrixX3d sinusoid(n, 3);
   sinusoid.col(0).setOnes();
-  const auto try_omega = [&](int axis, double omega) {
+  const auto try_omega = [&](double omega, const std::array<bool, 3>& axes) {
     sinusoid.col(1) = (omega * s).array().cos().matrix();
     sinusoid.col(2) = (omega * s).array().sin().matrix();
-    const auto fit = least_squares(sinusoid, positions.col(axis));
-    if (!fit) return;
-    const double rms = std::sqrt(fit->first);
-    if (!best[axis] || rms < best[axis]->rms_residual_m)
-      best[axis] = AxisOscillation{fit->second[0], fit->second[1], fit->second[2], omega, rms};
+    const LeastSquares sinusoid_fit(sinusoid);
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!axes[axis]) continue;
+      const auto fit = sinusoid_fit.fit(positions.col(axis));
+      if (!fit) continue;
+      const double rms = std::sqrt(fit->first);
+      if (!best[axis] || rms < best[axis]->rms_residual_m)
+        best[axis] = AxisOscillation{fit->second[0], fit->second[1], fit->second[2], omega, rms};
+    }
   };
+  if (!(to_fit[0] || to_fit[1] || to_fit[2])) return;
+  for (double omega = cfg_.min_omega_rad_s; omega <= cfg_.max_omega_rad_s; omega *= 1.04) try_omega(omega, to_fit);
   for (int axis = 0; axis < 3; ++axis) {
-    // A parabola within 5 mm leaves nothing to explain (a still or straight axis, no noise).
-    if (parabola_residual[axis] < 0.005 * 0.005) continue;
-    for (double omega = cfg_.min_omega_rad_s; omega <= cfg_.max_omega_rad_s; omega *= 1.04) try_omega(axis, omega);
-    if (!best[axis]) continue;
+    if (!to_fit[axis] || !best[axis]) continue;
+    std::array<bool, 3> only{};
+    only[axis] = true;
     const double coarse = best[axis]->omega_rad_s;
     for (int step = -7; step <= 7; ++step)
       if (step != 0)
-        try_omega(axis, std::clamp(coarse * (1.0 + 0.005 * step), cfg_.min_omega_rad_s, cfg_.max_omega_rad_s));
+        try_omega(std::clamp(coarse * (1.0 + 0.005 * step), cfg_.min_omega_rad_s, cfg_.max_omega_rad_s), only);
     const double rms = best[axis]->rms_residual_m;
     if (rms * rms * cfg_.min_improvement < parabola_residual[axis]) axes_[axis] = best[axis];
   }
