@@ -1,4 +1,6 @@
-// kestrel sweep and kestrel ab on short runs of the tracking graphs.
+// kestrel sweep and kestrel ab on short runs of a tracking graph. The graphs are the paper's tracking
+// experiment with the detection-level camera (tests/integration/graphs): these test the commands,
+// and the rendered chain would cost a minute under ASan for nothing they check.
 #include <gmock/gmock.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -14,6 +16,10 @@ extern char** environ;
 namespace fs = std::filesystem;
 
 namespace {
+
+const std::string kTracking = KESTREL_SOURCE_DIR "/tests/integration/graphs/tracking_detection_level.yaml";
+const std::string kTrackingParticle =
+    KESTREL_SOURCE_DIR "/tests/integration/graphs/tracking_detection_level_particle.yaml";
 
 int run_kestrel(std::vector<std::string> args) {
   std::string cli = KESTREL_CLI;
@@ -37,10 +43,9 @@ std::string read(const fs::path& f) {
 TEST(Experiments, SweepRunsTheGridWithEverySeed) {
   const fs::path dir = kestrel::testing::scratch_path("kestrel-sweep-test");
   fs::remove_all(dir);
-  ASSERT_EQ(
-      run_kestrel({"sweep", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--param", "tracker.filter.r=0.5:1.0:0.5",
-                   "--seeds", "2", "--duration", "0.5", "--report", dir.string()}),
-      0);
+  ASSERT_EQ(run_kestrel({"sweep", kTracking, "--param", "tracker.filter.r=0.5:1.0:0.5", "--seeds", "2", "--duration",
+                         "0.5", "--report", dir.string()}),
+            0);
   const std::string csv = read(dir / "sweep.csv");
   EXPECT_THAT(csv, ::testing::StartsWith("tracker.filter.r,seed,exit_code,"));
   EXPECT_THAT(csv, ::testing::HasSubstr("\n0.5,1,0,"));
@@ -51,8 +56,7 @@ TEST(Experiments, SweepRunsTheGridWithEverySeed) {
   EXPECT_TRUE(fs::exists(dir / "metrics_meta.json"));  // units for `kestrel plot sweep.csv`
   EXPECT_TRUE(fs::exists(dir / "runs" / "001_seed2" / "report.json"));
   // A bad parameter fails before any run, as an invalid graph.
-  EXPECT_EQ(run_kestrel({"sweep", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--param", "tracker.rr=0.5:1:0.5",
-                         "--report", (dir / "bad").string()}),
+  EXPECT_EQ(run_kestrel({"sweep", kTracking, "--param", "tracker.rr=0.5:1:0.5", "--report", (dir / "bad").string()}),
             3);
   EXPECT_FALSE(fs::exists(dir / "bad" / "runs"));
 }
@@ -67,8 +71,8 @@ TEST(Experiments, SweepRunsATableOfCasesWithTheirSeeds) {
                                       "tracker.filter.r,tracker.filter.q,seed\n"
                                       "0.5,,3\n"
                                       "\"2.0\",0.5,5\n";
-  ASSERT_EQ(run_kestrel({"sweep", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--cases",
-                         (dir / "cases.csv").string(), "--duration", "0.5", "--report", (dir / "out").string()}),
+  ASSERT_EQ(run_kestrel({"sweep", kTracking, "--cases", (dir / "cases.csv").string(), "--duration", "0.5", "--report",
+                         (dir / "out").string()}),
             0);
   const std::string csv = read(dir / "out" / "sweep.csv");
   EXPECT_THAT(csv, ::testing::StartsWith("tracker.filter.r,tracker.filter.q,seed,exit_code,"));
@@ -92,8 +96,8 @@ TEST(Experiments, SweepRunsATableOfCasesWithTheirSeeds) {
   // Every case is checked first, not only the first and the last: the second row's r is out of
   // range, so nothing runs.
   std::ofstream(dir / "bad.csv") << "tracker.filter.r,seed\n1.0,1\n-1,2\n2.0,3\n";
-  EXPECT_EQ(run_kestrel({"sweep", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--cases",
-                         (dir / "bad.csv").string(), "--duration", "0.5", "--report", (dir / "bad").string()}),
+  EXPECT_EQ(run_kestrel({"sweep", kTracking, "--cases", (dir / "bad.csv").string(), "--duration", "0.5", "--report",
+                         (dir / "bad").string()}),
             3);
   EXPECT_FALSE(fs::exists(dir / "bad" / "runs"));
 }
@@ -101,10 +105,9 @@ TEST(Experiments, SweepRunsATableOfCasesWithTheirSeeds) {
 TEST(Experiments, AbPairsSeedsAndNamesTheBetterGraph) {
   const fs::path dir = kestrel::testing::scratch_path("kestrel-ab-test");
   fs::remove_all(dir);
-  ASSERT_EQ(run_kestrel({"ab", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml",
-                         KESTREL_SOURCE_DIR "/graphs/paper_tracking_particle.yaml", "--seeds", "2", "--duration", "1",
-                         "--report", dir.string()}),
-            0);
+  ASSERT_EQ(
+      run_kestrel({"ab", kTracking, kTrackingParticle, "--seeds", "2", "--duration", "1", "--report", dir.string()}),
+      0);
   const auto ab = nlohmann::json::parse(read(dir / "ab.json"));
   EXPECT_EQ(ab.at("seeds"), 2);
   // Same detections on both sides (same seeds, same chain): only the tracker differs.
@@ -134,8 +137,7 @@ TEST(Experiments, AbPairsSeedsAndNamesTheBetterGraph) {
 TEST(Experiments, AbComparesSettingsOfOneGraph) {
   const fs::path dir = kestrel::testing::scratch_path("kestrel-ab-settings-test");
   fs::remove_all(dir);
-  ASSERT_EQ(run_kestrel({"ab", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml",
-                         KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--set-a", "tracker.filter.r=0.1", "--set-b",
+  ASSERT_EQ(run_kestrel({"ab", kTracking, kTracking, "--set-a", "tracker.filter.r=0.1", "--set-b",
                          "tracker.filter.r=5.0", "--seeds", "2", "--duration", "1", "--report", dir.string()}),
             0);
   const auto ab = nlohmann::json::parse(read(dir / "ab.json"));
@@ -146,10 +148,9 @@ TEST(Experiments, AbComparesSettingsOfOneGraph) {
   EXPECT_NE(rmse.at("mean_a").get<double>(), rmse.at("mean_b").get<double>());
   EXPECT_THAT(read(dir / "ab.md"), ::testing::HasSubstr("with tracker.filter.r=5.0"));
   // An override one side's graph does not accept fails before any run, as an invalid graph.
-  EXPECT_EQ(run_kestrel({"ab", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml",
-                         KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--set-b", "tracker.particles=10",
-                         "--report", (dir / "bad").string()}),
-            3);
+  EXPECT_EQ(
+      run_kestrel({"ab", kTracking, kTracking, "--set-b", "tracker.particles=10", "--report", (dir / "bad").string()}),
+      3);
   EXPECT_FALSE(fs::exists(dir / "bad" / "runs"));
 }
 
@@ -161,8 +162,7 @@ TEST(Experiments, MotCommandAndMotEvaluatorShareTheirKeys) {
   const fs::path dir = kestrel::testing::scratch_path("kestrel-mot-keys-test");
   fs::remove_all(dir);
   fs::create_directories(dir);
-  ASSERT_EQ(run_kestrel({"run", KESTREL_SOURCE_DIR "/graphs/paper_tracking.yaml", "--duration", "0.5", "--report",
-                         (dir / "run").string(), "--no-progress"}),
+  ASSERT_EQ(run_kestrel({"run", kTracking, "--duration", "0.5", "--report", (dir / "run").string(), "--no-progress"}),
             0);
   const auto tracking = nlohmann::json::parse(read(dir / "run" / "report.json")).at("tracking");
   std::ofstream(dir / "gt.txt") << "1,1,0,0,10,10,1,0,0,5\n2,1,0,0,10,10,1,0,0,5\n";
