@@ -40,6 +40,7 @@ struct AimPlannerConfig {
   enum class WhenLost { hold, search, back_off };
   enum class ShotPrediction { constant_velocity, constant_acceleration, model, oscillation };
   enum class AimTilt { level, target, hunter };
+  enum class AimAt { target, swing_centre };
   Eigen::Vector3d aim_point_m{0.0, 1.0, 2.0};
   Eigen::Vector3d net_open_point_m{0.0, 1.0, 2.0};
   Eigen::Vector3d camera_offset_m{0.1, 0.0, 0.0};
@@ -83,6 +84,10 @@ struct AimPlannerConfig {
   double oscillation_min_omega_rad_s = 0.5;
   double oscillation_max_omega_rad_s = 8.0;
   double oscillation_min_improvement = 2.0;
+  AimAt aim_at = AimAt::target;
+  double swing_min_amplitude_m = 1.0;
+  double swing_max_amplitude_m = 4.0;
+  double swing_max_residual_m = 0.1;
   double dwell_s = 0.5;
   double motion_axis_time_s = 0.0;
   AimTilt aim_tilt = AimTilt::level;
@@ -251,6 +256,29 @@ class AimPlannerNode final : public Node {
             "shot_prediction oscillation: an axis oscillates only where the sinusoid's mean squared residual is this "
             "many times below a parabola's (constant acceleration) over the same sightings; elsewhere it is predicted "
             "at constant velocity");
+    c.choice("aim_at", &C::aim_at, {{"target", C::AimAt::target}, {"swing_centre", C::AimAt::swing_centre}})
+        .describe(
+            "what the aim pose puts at x_E^d: the target (the paper's), or, on each axis where the target swings "
+            "(shot_prediction oscillation) by swing_min_amplitude_m to swing_max_amplitude_m, the centre of its swing: "
+            "the hunter waits there, facing it, for the target to come through the net, instead of chasing a swing "
+            "it cannot turn with");
+    c.param("swing_min_amplitude_m", &C::swing_min_amplitude_m)
+        .with_unit("m")
+        .range(0.0, 1000.0)
+        .describe("aim_at swing_centre: the least amplitude of a swing the hunter waits at the centre of");
+    c.param("swing_max_amplitude_m", &C::swing_max_amplitude_m)
+        .with_unit("m")
+        .range(0.0, 1000.0)
+        .describe(
+            "aim_at swing_centre: the largest: a wider swing leaves the camera's view from the centre for longer than "
+            "the tracker keeps it, and is followed");
+    c.param("swing_max_residual_m", &C::swing_max_residual_m)
+        .with_unit("m")
+        .range(0.0, 1000.0)
+        .describe(
+            "aim_at swing_centre: the largest RMS residual of the swing's sinusoid: a less regular swing (a line flown "
+            "back and forth at a cruise) comes through the centre at a time the fit does not predict well enough, "
+            "and is followed");
     c.param("fire_probability", &C::fire_probability)
         .range(0.0, 1.0)
         .describe(
@@ -350,6 +378,11 @@ class AimPlannerNode final : public Node {
     c.rule("oscillation_min_omega_rad_s < oscillation_max_omega_rad_s",
            {"oscillation_min_omega_rad_s", "oscillation_max_omega_rad_s"},
            [](const C& k) { return k.oscillation_min_omega_rad_s < k.oscillation_max_omega_rad_s; });
+    c.rule("aim_at swing_centre needs shot_prediction oscillation", {"aim_at", "shot_prediction"}, [](const C& k) {
+      return k.aim_at == C::AimAt::target || k.shot_prediction == C::ShotPrediction::oscillation;
+    });
+    c.rule("swing_min_amplitude_m <= swing_max_amplitude_m", {"swing_min_amplitude_m", "swing_max_amplitude_m"},
+           [](const C& k) { return k.swing_min_amplitude_m <= k.swing_max_amplitude_m; });
     c.rule("last_net_radius_m <= capture_radius_m", {"last_net_radius_m", "capture_radius_m"},
            [](const C& k) { return k.last_net_radius_m <= k.capture_radius_m; });
     // The aim plans only what the airframe flies.
@@ -438,9 +471,8 @@ class AimPlannerNode final : public Node {
       if (!first_seen_range_) first_seen_range_ = in_camera.norm();
       // A new track id is often the same intruder, its track restarted after a few misses: the
       // estimate goes on (and keeps what it knows of the velocity) when the sighting is where it
-      // predicts, within reacquire_m; a new estimate otherwise.
-      const bool same_target = estimate_ && (target->id == target_id_ ||
-                                             (estimate_->state().head<3>() - intruder).norm() <= cfg_.reacquire_m);
+      // predicts, or where the oscillation does, within reacquire_m; a new estimate otherwise.
+      const bool same_target = estimate_ && (target->id == target_id_ || expected_near(t, intruder));
       target_id_ = target->id;
       if (!same_target) {
         estimate_.emplace(
@@ -460,11 +492,18 @@ class AimPlannerNode final : public Node {
       const Eigen::VectorXd x = estimate_->state();
       const double smoothing = cfg_.aim_tilt_time_s > 0.0 ? dt / (cfg_.aim_tilt_time_s + dt) : 1.0;
       tilt_acceleration_ += smoothing * (Eigen::Vector3d(x.segment<3>(6)) - tilt_acceleration_);
-      goal_ = aim_pose(x.head<3>(), hunter->position, geometry::yaw_of(hunter->orientation),
-                       guidance::AimGeometry{cfg_.aim_point_m, cfg_.camera_offset_m}, expected_acceleration(*hunter));
+      // aim_at swing_centre: wait at the centre of a wide swing for the target to come through.
+      const SwingAim aimed = cfg_.aim_at == AimPlannerConfig::AimAt::swing_centre && oscillation_
+                                 ? swing_centre_aim(*oscillation_, x.head<3>(), x.segment<3>(3),
+                                                    SwingBounds{cfg_.swing_min_amplitude_m, cfg_.swing_max_amplitude_m,
+                                                                cfg_.swing_max_residual_m})
+                                 : SwingAim{x.head<3>(), x.segment<3>(3), {}};
+      goal_velocity_ = aimed.velocity;
+      goal_ = aim_pose(aimed.position, hunter->position, geometry::yaw_of(hunter->orientation),
+                       guidance::AimGeometry{cfg_.aim_point_m, cfg_.camera_offset_m},
+                       expected_acceleration(*hunter, aimed.waiting));
       if (cfg_.motion_axis_time_s > 0.0) stand_along_motion(x, dt);
       goal_->position.z() = std::max(goal_->position.z(), cfg_.min_altitude_m);
-      goal_velocity_ = x.segment<3>(3);
       last_seen_ = t;
       last_target_ = x.head<3>();
       error = cfg_.aim_point_m - in_camera;
@@ -618,14 +657,29 @@ class AimPlannerNode final : public Node {
   // The hunter's acceleration while it holds the aim (aim_tilt), which tilts its camera: the
   // target's, which a hunter riding along with it flies; or the one its attitude holds now, the
   // thrust's horizontal part over its vertical part carrying the weight.
-  Eigen::Vector3d expected_acceleration(const msg::VehicleState& hunter) const {
+  // A hunter waiting at a swing's centre flies none of the target's acceleration along that axis.
+  Eigen::Vector3d expected_acceleration(const msg::VehicleState& hunter, const std::array<bool, 3>& waiting) const {
     using T = AimPlannerConfig::AimTilt;
-    if (cfg_.aim_tilt == T::target) return flyable(cfg_.aim_tilt_share * tilt_acceleration_);
+    if (cfg_.aim_tilt == T::target) {
+      Eigen::Vector3d followed = tilt_acceleration_;
+      for (int axis = 0; axis < 3; ++axis)
+        if (waiting[axis]) followed[axis] = 0.0;
+      return flyable(cfg_.aim_tilt_share * followed);
+    }
     if (cfg_.aim_tilt == T::hunter) {
       const Eigen::Vector3d up = hunter.orientation * Eigen::Vector3d::UnitZ();
       if (up.z() > 0.1) return guidance::kGravity_m_s2 * Eigen::Vector3d(up.x() / up.z(), up.y() / up.z(), 0.0);
     }
     return Eigen::Vector3d::Zero();
+  }
+
+  // Whether a sighting at time t is where the target is expected, within reacquire_m: where the
+  // estimate predicts it, or, on the axes that oscillate, where the oscillation does (a swing that
+  // left the view comes back where the fit says, not where its last velocity points).
+  bool expected_near(double t, const Eigen::Vector3d& sighting) const {
+    const Eigen::Vector3d predicted = estimate_->state().head<3>();
+    if ((predicted - sighting).norm() <= cfg_.reacquire_m) return true;
+    return oscillation_ && (oscillation_->position_at(t, predicted) - sighting).norm() <= cfg_.reacquire_m;
   }
 
   // What the hunter flies of an acceleration: its horizontal part within max_acceleration_m_s2,

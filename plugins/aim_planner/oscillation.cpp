@@ -99,4 +99,27 @@ double OscillationPredictor::position_after(const AxisOscillation& axis, double 
   return axis.centre + axis.a * std::cos(axis.omega_rad_s * tau) + axis.b * std::sin(axis.omega_rad_s * tau);
 }
 
+Eigen::Vector3d OscillationPredictor::position_at(double t, Eigen::Vector3d elsewhere) const {
+  for (int axis = 0; axis < 3; ++axis)
+    if (const auto& o = axes_[axis]) elsewhere[axis] = position_after(*o, t - window_.back().t);
+  return elsewhere;
+}
+
+SwingAim swing_centre_aim(const OscillationPredictor& oscillation, const Eigen::Vector3d& position,
+                          const Eigen::Vector3d& velocity, const SwingBounds& bounds) {
+  SwingAim aim{position, velocity, {}};
+  for (int axis = 0; axis < 3; ++axis) {
+    const auto& o = oscillation.axes()[axis];
+    if (!o) continue;
+    const double amplitude = std::hypot(o->a, o->b);
+    if (amplitude < bounds.min_amplitude_m || amplitude > bounds.max_amplitude_m ||
+        o->rms_residual_m > bounds.max_residual_m)
+      continue;
+    aim.position[axis] = o->centre;
+    aim.velocity[axis] = 0.0;
+    aim.waiting[axis] = true;
+  }
+  return aim;
+}
+
 }  // namespace kestrel::aim

@@ -40,6 +40,9 @@ class OscillationPredictor {
   const std::array<std::optional<AxisOscillation>, 3>& axes() const { return axes_; }
   /// An oscillating axis's position `tau` seconds after the newest sighting.
   static double position_after(const AxisOscillation& axis, double tau);
+  /// Where the target is expected at time t (s): on the oscillating axes, the oscillation's
+  /// prediction; on the others, `elsewhere`'s (the caller's own prediction).
+  Eigen::Vector3d position_at(double t, Eigen::Vector3d elsewhere) const;
 
  private:
   void fit();
@@ -52,5 +55,24 @@ class OscillationPredictor {
   std::deque<Sighting> window_;
   std::array<std::optional<AxisOscillation>, 3> axes_;
 };
+
+/// The aim that waits at the centre of a wide swing: a figure-8 or a line flown back and forth
+/// faster than the hunter can turn with is caught where it comes through, not chased. On each axis
+/// that oscillates by min_amplitude_m to max_amplitude_m, as a sinusoid within max_residual_m
+/// (RMS; a line flown back and forth at a cruise is no sinusoid, and its crossing is mistimed),
+/// the target's position is replaced by the swing's
+/// centre and its velocity by zero; elsewhere they are the target's own.
+struct SwingAim {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+  std::array<bool, 3> waiting{};  ///< the axes aimed at the swing's centre
+};
+struct SwingBounds {
+  double min_amplitude_m = 1.0;
+  double max_amplitude_m = 4.0;
+  double max_residual_m = 0.1;
+};
+SwingAim swing_centre_aim(const OscillationPredictor& oscillation, const Eigen::Vector3d& position,
+                          const Eigen::Vector3d& velocity, const SwingBounds& bounds);
 
 }  // namespace kestrel::aim

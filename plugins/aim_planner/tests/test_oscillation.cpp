@@ -83,3 +83,45 @@ TEST(Oscillation, TheWindowForgetsOldSightings) {
   const auto predictor = sight([&](double t) { return t < 4.0 ? eight.at(t) : eight.at(4.0); }, 4.0 + 2.6, 0.0);
   for (const auto& axis : predictor.axes()) EXPECT_FALSE(axis);
 }
+
+// A swing that leaves the view comes back where the fit says: 0.6 s after the last sighting (a
+// figure-8's end, out of the camera's view), the oscillation puts it within 0.2 m of the truth;
+// the axis that does not oscillate keeps the caller's prediction.
+TEST(Oscillation, PredictsWhereALostSwingComesBack) {
+  const EightPath eight;
+  const double last = 4.0, later = 4.6;
+  const auto predictor = sight([&](double t) { return eight.at(t); }, last, 0.04);
+  const Eigen::Vector3d elsewhere(7.5, -20.0, 40.0);
+  const Eigen::Vector3d expected = predictor.position_at(later, elsewhere);
+  EXPECT_EQ(expected.x(), elsewhere.x());
+  EXPECT_LT((expected.tail<2>() - eight.at(later).tail<2>()).norm(), 0.2);
+  // Constant velocity from the last sighting would be over a metre off.
+  const Eigen::Vector3d velocity = (eight.at(last + 1e-4) - eight.at(last - 1e-4)) / 2e-4;
+  EXPECT_GT((eight.at(last) + velocity * (later - last) - eight.at(later)).norm(), 1.0);
+}
+
+// The aim at the swing's centre: the figure-8's 2 m swing across the view is aimed at its centre,
+// at rest; its 0.5 m swing up and down, under the least amplitude, and the depth are the target's.
+TEST(Oscillation, TheSwingCentreAimWaitsWhereTheWideSwingComesThrough) {
+  const EightPath eight;
+  const double now = 4.3;  // the target off the centre, flying
+  const auto predictor = sight([&](double t) { return eight.at(t); }, now, 0.0);
+  const Eigen::Vector3d position = eight.at(now);
+  const Eigen::Vector3d velocity = (eight.at(now + 1e-4) - eight.at(now - 1e-4)) / 2e-4;
+  ASSERT_GT(std::abs(position.y() - eight.centre.y()), 1.0);
+  const SwingAim aim = swing_centre_aim(predictor, position, velocity, SwingBounds{1.0, 4.0, 0.1});
+  EXPECT_EQ(aim.waiting, (std::array<bool, 3>{false, true, false}));
+  EXPECT_NEAR(aim.position.y(), eight.centre.y(), 0.05);
+  EXPECT_EQ(aim.velocity.y(), 0.0);
+  EXPECT_EQ(aim.position.x(), position.x());
+  EXPECT_EQ(aim.position.z(), position.z());
+  EXPECT_EQ(aim.velocity.z(), velocity.z());
+  // Swings narrower or wider than the bounds, or fitted less closely, leave the target as it is.
+  for (const SwingBounds& bounds :
+       {SwingBounds{2.5, 4.0, 0.1}, SwingBounds{0.1, 0.4, 0.1}, SwingBounds{0.1, 4.0, 0.0}}) {
+    const SwingAim follow = swing_centre_aim(predictor, position, velocity, bounds);
+    EXPECT_EQ(follow.waiting, (std::array<bool, 3>{})) << bounds.min_amplitude_m << " to " << bounds.max_amplitude_m;
+    EXPECT_EQ(follow.position, position);
+    EXPECT_EQ(follow.velocity, velocity);
+  }
+}
