@@ -77,11 +77,13 @@ TEST(ClosedLoop, ACommandForAnotherVehicleIsAnErrorNamingTheSimulator) {
 // the same seed flies the same flight, to the last bit of every figure.
 TEST(ClosedLoop, TheInterceptionIsReproducibleBitForBit) {
   const std::string graph = KESTREL_SOURCE_DIR "/graphs/sim_intercept.yaml";
-  const RunResult a = run(graph, {}, 3, 8.0), b = run(graph, {}, 3, 8.0);
+  // 4 s: the hunter takes off, sees, aims and fires (at about 3 s) in that time.
+  const RunResult a = run(graph, {}, 3, 4.0), b = run(graph, {}, 3, 4.0);
   ASSERT_EQ(a.outcome, RunOutcome::completed) << (a.errors.empty() ? "" : a.errors.front());
   for (const char* section : {"hunter", "controller", "aim", "control", "detection", "tracking"})
     EXPECT_EQ(a.report.at(section), b.report.at(section)) << section;
   EXPECT_GT(a.report.at("aim").at("target_frames").get<int>(), 0);  // it did engage
+  EXPECT_GE(a.report.at("aim").at("fire_count").get<int>(), 1);     // and fired
 }
 
 // Detections blacked out for 2 s while the hunter closes in (the intruder is first seen about
@@ -113,7 +115,7 @@ void expect_a_blackout_to_make_the_hunter_hold_then_reacquire(const std::string&
   std::ofstream(dir / "parts" / "intercept_aim.yaml") << yaml;
   std::filesystem::copy_file(KESTREL_SOURCE_DIR "/graphs/" + graph + ".yaml", dir / (graph + ".yaml"),
                              std::filesystem::copy_options::overwrite_existing);
-  const RunResult r = run((dir / (graph + ".yaml")).string(), {}, {}, 20.0);
+  const RunResult r = run((dir / (graph + ".yaml")).string(), {}, {}, 10.0);  // time for the capture after the blackout
   std::filesystem::remove_all(dir);
   ASSERT_EQ(r.outcome, RunOutcome::completed) << (r.errors.empty() ? "" : r.errors.front());
   const auto& aim = r.report.at("aim");
