@@ -597,11 +597,7 @@ class AimPlannerNode final : public Node {
     using P = AimPlannerConfig::ShotPrediction;
     if (oscillation_)  // the oscillating axes as fitted, the others at constant velocity
       return predict_shot(net_, camera, hunter_velocity, [&](double tau) {
-        Eigen::Vector3d p = x.head<3>() + x.segment<3>(3) * (lead + tau);
-        for (int axis = 0; axis < 3; ++axis)
-          if (const auto& o = oscillation_->axes()[axis])
-            p[axis] = OscillationPredictor::position_after(*o, lead + tau);
-        return p;
+        return oscillation_->predict(lead + tau, x.head<3>() + x.segment<3>(3) * (lead + tau));
       });
     if (cfg_.shot_prediction == P::model)
       return predict_shot(net_, camera, hunter_velocity,
@@ -679,7 +675,8 @@ class AimPlannerNode final : public Node {
   bool expected_near(double t, const Eigen::Vector3d& sighting) const {
     const Eigen::Vector3d predicted = estimate_->state().head<3>();
     if ((predicted - sighting).norm() <= cfg_.reacquire_m) return true;
-    return oscillation_ && (oscillation_->position_at(t, predicted) - sighting).norm() <= cfg_.reacquire_m;
+    // last_seen_: the newest sighting, the oscillation's too.
+    return oscillation_ && (oscillation_->predict(t - last_seen_, predicted) - sighting).norm() <= cfg_.reacquire_m;
   }
 
   // What the hunter flies of an acceleration: its horizontal part within max_acceleration_m_s2,

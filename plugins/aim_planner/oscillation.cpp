@@ -99,9 +99,9 @@ double OscillationPredictor::position_after(const AxisOscillation& axis, double 
   return axis.centre + axis.a * std::cos(axis.omega_rad_s * tau) + axis.b * std::sin(axis.omega_rad_s * tau);
 }
 
-Eigen::Vector3d OscillationPredictor::position_at(double t, Eigen::Vector3d elsewhere) const {
+Eigen::Vector3d OscillationPredictor::predict(double tau, Eigen::Vector3d elsewhere) const {
   for (int axis = 0; axis < 3; ++axis)
-    if (const auto& o = axes_[axis]) elsewhere[axis] = position_after(*o, t - window_.back().t);
+    if (const auto& o = axes_[axis]) elsewhere[axis] = position_after(*o, tau);
   return elsewhere;
 }
 

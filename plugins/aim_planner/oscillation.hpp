@@ -40,9 +40,9 @@ class OscillationPredictor {
   const std::array<std::optional<AxisOscillation>, 3>& axes() const { return axes_; }
   /// An oscillating axis's position `tau` seconds after the newest sighting.
   static double position_after(const AxisOscillation& axis, double tau);
-  /// Where the target is expected at time t (s): on the oscillating axes, the oscillation's
-  /// prediction; on the others, `elsewhere`'s (the caller's own prediction).
-  Eigen::Vector3d position_at(double t, Eigen::Vector3d elsewhere) const;
+  /// Where the target is expected `tau` seconds after the newest sighting: on the oscillating axes,
+  /// the oscillation's prediction; on the others, `elsewhere`'s (the caller's own prediction).
+  Eigen::Vector3d predict(double tau, Eigen::Vector3d elsewhere) const;
 
  private:
   void fit();
@@ -60,8 +60,8 @@ class OscillationPredictor {
 /// faster than the hunter can turn with is caught where it comes through, not chased. On each axis
 /// that oscillates by min_amplitude_m to max_amplitude_m, as a sinusoid within max_residual_m
 /// (RMS; a line flown back and forth at a cruise is no sinusoid, and its crossing is mistimed),
-/// the target's position is replaced by the swing's
-/// centre and its velocity by zero; elsewhere they are the target's own.
+/// the target's position is replaced by the swing's centre and its velocity by zero; elsewhere
+/// they are the target's own.
 struct SwingAim {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();

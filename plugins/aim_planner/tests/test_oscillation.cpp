@@ -92,7 +92,7 @@ TEST(Oscillation, PredictsWhereALostSwingComesBack) {
   const double last = 4.0, later = 4.6;
   const auto predictor = sight([&](double t) { return eight.at(t); }, last, 0.04);
   const Eigen::Vector3d elsewhere(7.5, -20.0, 40.0);
-  const Eigen::Vector3d expected = predictor.position_at(later, elsewhere);
+  const Eigen::Vector3d expected = predictor.predict(later - last, elsewhere);
   EXPECT_EQ(expected.x(), elsewhere.x());
   EXPECT_LT((expected.tail<2>() - eight.at(later).tail<2>()).norm(), 0.2);
   // Constant velocity from the last sighting would be over a metre off.
