@@ -32,6 +32,7 @@ struct NetSimConfig {
   double gravity_m_s2 = 9.81;
   std::int64_t nets = 0;  // 0: unlimited
   double reload_s = 0.0;
+  double end_after_decided_s = -1.0;  // < 0: the run goes on to its duration
   std::string section = "control";
   std::int64_t max_samples = 100000;
 };
@@ -65,6 +66,12 @@ class NetSimNode final : public Node {
         .with_unit("s")
         .range(0.0, 3600.0)
         .describe("after a shot, the launcher cannot fire again for this long");
+    c.param("end_after_decided_s", &C::end_after_decided_s)
+        .with_unit("s")
+        .range(-1.0, 3600.0)
+        .describe(
+            "end the run this long after the engagement is decided (the intruder caught, or the last net spent "
+            "without catching it); negative: the run goes on to its duration");
     c.param("section", &C::section).describe("report section of the closed-loop figures");
     c.param("max_samples", &C::max_samples).range(2, 10000000).describe("samples kept for the plots (memory bound)");
     return NodeSpec("net_sim", "Simulated net: flies, opens, catches; judges the intercept")
@@ -144,7 +151,10 @@ class NetSimNode final : public Node {
       previous_ = {tt, intruder->position_world};
       previous_velocity_ = intruder->velocity_world;
       std::erase_if(shots_, [&](const auto& s) { return model_.spent(s.first, tt); });
+      const bool nets_spent = cfg_.nets > 0 && static_cast<std::int64_t>(fire_times_.size()) >= cfg_.nets;
+      if (!captured_at_ && !missed_at_ && nets_spent && shots_.empty()) missed_at_ = tt;
     }
+    end_once_decided(ctx, t);
   }
 
   void finish(Context& ctx) override {
@@ -186,6 +196,16 @@ class NetSimNode final : public Node {
   explicit NetSimNode(const NetSimConfig& cfg)
       : cfg_(cfg),
         model_(NetParams{cfg.open_point_m, cfg.flight_time_s, cfg.radius_m, cfg.open_for_s, cfg.gravity_m_s2}) {}
+
+  // An engagement decided has nothing more to show: the run may end a little later (the net and
+  // the intruder falling, in the plots and the video).
+  void end_once_decided(Context& ctx, double now) {
+    if (cfg_.end_after_decided_s < 0.0) return;
+    const std::optional<double> decided = captured_at_ ? captured_at_ : missed_at_;
+    if (decided && now >= *decided + cfg_.end_after_decided_s)
+      ctx.end_run(captured_at_ ? fmt::format("the intruder was caught at {:.2f} s", *captured_at_)
+                               : fmt::format("the last net missed; spent at {:.2f} s", *missed_at_));
+  }
 
   void publish_launcher(Context& ctx, Time now) {
     const auto used = static_cast<std::int64_t>(fire_times_.size());
@@ -273,6 +293,7 @@ class NetSimNode final : public Node {
   std::optional<std::pair<double, Eigen::Vector3d>> previous_;   ///< the intruder's last sample
   std::vector<double> fire_times_;
   std::optional<double> first_fire_, aligned_at_, captured_at_;
+  std::optional<double> missed_at_;         // the last net spent without catching
   std::optional<std::size_t> captured_by_;  // the shot that caught it
   bool announced_ = false;                  // the launcher's first state is out
   double ready_at_ = 0.0;                   // s: no shot before this (reloading)

@@ -81,6 +81,7 @@ void Context::add_artifact(const std::string& file_name, std::string_view bytes,
 }
 void Context::end_of_stream() { rt_.source_ended = true; }
 void Context::request_stop() { rt_.run->stop_requested = true; }
+void Context::end_run(std::string_view why) { rt_.run->end_run(rt_.id(), why); }
 
 namespace detail {
 
@@ -268,7 +269,20 @@ void RunState::announce_when_running() {
 }
 
 bool RunState::stopping() const {
-  return stop_requested.load() || failed.load() || (options.stop_flag != nullptr && options.stop_flag->load());
+  return stop_requested.load() || end_requested.load() || failed.load() ||
+         (options.stop_flag != nullptr && options.stop_flag->load());
+}
+
+void RunState::end_run(const std::string& node, std::string_view why) {
+  std::lock_guard lock(ended_by_mutex_);
+  if (!ended_by_.is_null()) return;
+  ended_by_ = {{"node", node}, {"why", std::string(why)}};
+  end_requested = true;
+}
+
+nlohmann::json RunState::ended_by() const {
+  std::lock_guard lock(ended_by_mutex_);
+  return ended_by_;
 }
 
 void RunState::node_error(NodeRuntime& node, const std::string& what) {

@@ -53,6 +53,9 @@ void write_report(const std::filesystem::path& dir, const RunResult& result,
                     graph.value("clock", std::string()), graph["seed"].dump(),
                     result.report.value("outcome", std::string()));
   md += fmt::format("- run time: {:.2f} s, wall time: {:.2f} s\n", result.sim_time_s, result.wall_time_s);
+  if (const nlohmann::json ended = result.report.value("ended_by", nlohmann::json()); ended.is_object())
+    md += fmt::format("- ended by node `{}`: {}\n", ended.value("node", std::string()),
+                      ended.value("why", std::string()));
   if (!result.errors.empty()) {
     md += "\n## Errors\n\n";
     for (const auto& e : result.errors) md += "- " + e + "\n";

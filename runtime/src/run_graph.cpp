@@ -123,7 +123,7 @@ RunResult run_graph(const GraphConfig& graph, const Registry& registry, const Ru
   result.sim_time_s = to_seconds(ended_at);
   if (run.failed)
     result.outcome = RunOutcome::failed;
-  else if (run.stopping())
+  else if (run.stopping() && !run.end_requested)
     result.outcome = RunOutcome::stopped;
   result.errors = run.errors();
   collect_stats(run, result);
@@ -132,6 +132,7 @@ RunResult run_graph(const GraphConfig& graph, const Registry& registry, const Ru
   result.report["graph"]["hash"] = detail::graph_hash(graph);
   result.report.update({{"outcome", outcome_name(result.outcome)},
                         {"errors", result.errors},
+                        {"ended_by", run.ended_by()},
                         {"run_time_s", result.sim_time_s},
                         {"wall_time_s", result.wall_time_s},
                         {"stats", stats_json(result)}});

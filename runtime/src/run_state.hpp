@@ -8,9 +8,11 @@
 #include <deque>
 #include <memory>
 #include <mutex>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <random>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "kestrel/node.hpp"
@@ -135,6 +137,7 @@ class RunState {
 
   std::atomic<std::uint64_t> next_sequence{1};
   std::atomic<bool> stop_requested{false};  // drain and end
+  std::atomic<bool> end_requested{false};   // a node has ended the run: drain and complete
   std::atomic<bool> failed{false};          // a node error under on_error: stop
 
   /// Builds every node. Returns false (with errors recorded) if a constructor threw.
@@ -145,13 +148,19 @@ class RunState {
   bool all_sources_ended() const;
   /// Calls options.on_running the first time every source has been called (or has ended).
   void announce_when_running();
-  /// True once the run should wind down: stop requested, failed, or an external stop flag.
+  /// True once the run should wind down: stop or end requested, failed, or an external stop flag.
   bool stopping() const;
   void node_error(NodeRuntime& node, const std::string& what);
   std::vector<std::string> errors() const;
+  /// A node ends the run (Context::end_run): the first one's id and reason are kept.
+  void end_run(const std::string& node, std::string_view why);
+  /// {"node", "why"} of the node that ended the run; null when none did.
+  nlohmann::json ended_by() const;
 
  private:
   bool announced_ = false;
+  mutable std::mutex ended_by_mutex_;
+  nlohmann::json ended_by_;
   mutable std::mutex errors_mutex_;
   std::vector<std::string> errors_;
 };

@@ -255,6 +255,8 @@ OUTCOMES["split_vehicle"] = (12.0, [
      "the intruder is caught, as in sim_intercept"),
     ("r['hunter']['touchdowns'] == 0 and r['controller']['faults'] == 0", "no crash, no fault"),
     ("r['dds']['published_by_topic']['/gate/detections'] > 0", "detections went out"),
+    ("r['ended_by']['node'] == 'net' and r['run_time_s'] <= r['control']['time_to_capture_s'] + 1.1",
+     "the run ended a second after the capture (net.end_after_decided_s)"),
 ] + [(f"r['dds']['published_by_topic']['{topic}'] == live['vehicle']['received']['{port}']",
       f"every {port} message published reached the ground")
      for topic, port in (("/gate/detections", "detections"), ("/camera/truth", "truth"),

@@ -211,3 +211,43 @@ TEST(NetSim, ALauncherFiresOnlyTheNetsItCarriesAndWaitsForItsReload) {
     EXPECT_EQ(control.at("shots").size(), static_cast<std::size_t>(c.used));
   }
 }
+
+// end_after_decided_s: once the net has caught the intruder, or the last net has flown without
+// catching it, the run ends that long later, completed, and the report says which node ended it.
+TEST(NetSim, TheRunEndsOnceTheEngagementIsDecided) {
+  const std::string graph = KESTREL_SOURCE_DIR "/graphs/sim_intercept_fast.yaml";
+  const RunResult caught = run(graph, {"net.end_after_decided_s=0.5"}, {}, 30.0);
+  ASSERT_EQ(caught.outcome, RunOutcome::completed) << (caught.errors.empty() ? "" : caught.errors.front());
+  const auto& control = caught.report.at("control");
+  ASSERT_EQ(control.at("captured"), true);
+  const double capture_s = control.at("time_to_capture_s").get<double>();
+  EXPECT_GE(caught.sim_time_s, capture_s + 0.5);
+  EXPECT_LE(caught.sim_time_s, capture_s + 0.5 + 1.0 / 30 + 1e-9);  // the net judges at the truth's 30 Hz
+  EXPECT_EQ(caught.report.at("ended_by").at("node"), "net");
+  EXPECT_THAT(caught.report.at("ended_by").at("why").get<std::string>(), ::testing::HasSubstr("caught"));
+
+  // One net, fired at 0.5 s at an intruder far out of its reach: spent once it has flown and
+  // stayed open (0.4 + 0.3 s), then the run ends 0.2 s later, not at its 2 s.
+  ASSERT_TRUE(kestrel::testing::built_plugins().load(KESTREL_TEST_PLUGIN_DIR "/kestrel_test_nodes.so"));
+  const std::string yaml =
+      "kestrel: 1\nname: missed\nexecutor: {type: lockstep}\nduration: 2.0\nnodes:\n"
+      "  - {id: intruder, type: intruder, params: {shape: figure8, rate_hz: 30}}\n"
+      "  - {id: hunter, type: quadrotor_sim}\n"
+      "  - {id: orders, type: fire_orders, params: {first_s: 0.5, second_s: 1.9}}\n"
+      "  - {id: net, type: net_sim, params: {nets: 1, end_after_decided_s: 0.2}}\n"
+      "connections:\n"
+      "  - {from: orders.fire, to: net.fire, policy: fifo 16}\n"
+      "  - {from: hunter.state, to: net.hunter}\n"
+      "  - {from: intruder.truth, to: net.truth, policy: fifo 64}\n";
+  const RunResult missed = kestrel::testing::run_built_graph(GraphSource::from_string(yaml, "missed.yaml"), {});
+  ASSERT_EQ(missed.outcome, RunOutcome::completed) << (missed.errors.empty() ? "" : missed.errors.front());
+  EXPECT_EQ(missed.report.at("control").at("captured"), false);
+  EXPECT_GE(missed.sim_time_s, 0.5 + 0.7 + 0.2);
+  EXPECT_LE(missed.sim_time_s, 0.5 + 0.7 + 0.2 + 2.0 / 30 + 1e-9);
+  EXPECT_THAT(missed.report.at("ended_by").at("why").get<std::string>(), ::testing::HasSubstr("missed"));
+
+  // Negative (the default): the run goes on to its duration, and nothing claims to have ended it.
+  const RunResult on = run(graph, {}, {}, 6.0);
+  EXPECT_NEAR(on.sim_time_s, 6.0, 0.011);  // its last step
+  EXPECT_TRUE(on.report.at("ended_by").is_null());
+}

@@ -28,8 +28,9 @@ nlohmann::json read_report(const std::filesystem::path& dir) {
 }
 
 Metrics report_metrics(const nlohmann::json& report) {
-  static const std::set<std::string> runtime_keys = {"kestrel_version", "graph",       "outcome", "errors",
-                                                     "run_time_s",      "wall_time_s", "stats",   "metrics_meta"};
+  static const std::set<std::string> runtime_keys = {"kestrel_version", "graph",  "outcome",
+                                                     "ended_by",        "errors", "run_time_s",
+                                                     "wall_time_s",     "stats",  "metrics_meta"};
   Metrics out;
   if (!report.is_object()) return out;
   for (const auto& [key, value] : report.items())

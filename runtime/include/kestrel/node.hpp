@@ -154,6 +154,10 @@ class Context {
   void end_of_stream();
   /// Ends the whole run cleanly, as a signal would.
   void request_stop();
+  /// Ends the whole run here, as reaching its duration would: every node finishes, the outcome is
+  /// `completed`, and the report's `ended_by` gives this node's id and `why`. For a node that
+  /// knows the run has nothing more to show (an engagement decided). The first call counts.
+  void end_run(std::string_view why);
 
  private:
   void publish_erased(std::string_view output, std::shared_ptr<const void> payload, std::string_view type,
