@@ -108,13 +108,19 @@ Eigen::Vector3d OscillationPredictor::predict(double tau, Eigen::Vector3d elsewh
 SwingAim swing_centre_aim(const OscillationPredictor& oscillation, const Eigen::Vector3d& position,
                           const Eigen::Vector3d& velocity, const SwingBounds& bounds) {
   SwingAim aim{position, velocity, {}};
+  const auto fitted = [&](const std::optional<AxisOscillation>& o) {
+    return o && std::hypot(o->a, o->b) <= bounds.max_amplitude_m && o->rms_residual_m <= bounds.max_residual_m;
+  };
+  const bool wide = std::any_of(oscillation.axes().begin(), oscillation.axes().end(), [&](const auto& o) {
+    return fitted(o) && std::hypot(o->a, o->b) >= bounds.min_amplitude_m;
+  });
+  if (!wide) return aim;
+  // A swing wide enough to wait for: wait at its centre on every axis that swings, the narrow ones
+  // too. A line flown obliquely, or a figure-8, passes through the centre of each of its swings at
+  // once; an axis left following its narrow swing lags it, and the net, by up to that swing.
   for (int axis = 0; axis < 3; ++axis) {
     const auto& o = oscillation.axes()[axis];
-    if (!o) continue;
-    const double amplitude = std::hypot(o->a, o->b);
-    if (amplitude < bounds.min_amplitude_m || amplitude > bounds.max_amplitude_m ||
-        o->rms_residual_m > bounds.max_residual_m)
-      continue;
+    if (!fitted(o)) continue;
     aim.position[axis] = o->centre;
     aim.velocity[axis] = 0.0;
     aim.waiting[axis] = true;

@@ -110,12 +110,15 @@ TEST(Oscillation, TheSwingCentreAimWaitsWhereTheWideSwingComesThrough) {
   const Eigen::Vector3d velocity = (eight.at(now + 1e-4) - eight.at(now - 1e-4)) / 2e-4;
   ASSERT_GT(std::abs(position.y() - eight.centre.y()), 1.0);
   const SwingAim aim = swing_centre_aim(predictor, position, velocity, SwingBounds{1.0, 4.0, 0.1});
-  EXPECT_EQ(aim.waiting, (std::array<bool, 3>{false, true, false}));
+  // The wide swing across and, with it, the narrow one up: the figure-8 crosses both centres at once.
+  EXPECT_EQ(aim.waiting, (std::array<bool, 3>{false, true, true}));
   EXPECT_NEAR(aim.position.y(), eight.centre.y(), 0.05);
+  EXPECT_NEAR(aim.position.z(), eight.centre.z(), 0.05);
+  EXPECT_GT(std::abs(position.z() - eight.centre.z()), 0.1);  // the target itself is off it
   EXPECT_EQ(aim.velocity.y(), 0.0);
-  EXPECT_EQ(aim.position.x(), position.x());
-  EXPECT_EQ(aim.position.z(), position.z());
-  EXPECT_EQ(aim.velocity.z(), velocity.z());
+  EXPECT_EQ(aim.velocity.z(), 0.0);
+  EXPECT_EQ(aim.position.x(), position.x());  // the depth, which does not swing, as it is
+  EXPECT_EQ(aim.velocity.x(), velocity.x());
   // Swings narrower or wider than the bounds, or fitted less closely, leave the target as it is.
   for (const SwingBounds& bounds :
        {SwingBounds{2.5, 4.0, 0.1}, SwingBounds{0.1, 0.4, 0.1}, SwingBounds{0.1, 4.0, 0.0}}) {
