@@ -181,8 +181,32 @@ TEST(RunStatistics, EachNodeReportsTheAgeOfWhatItPublishesSinceCapture) {
 
 // The launcher's budget: two fire orders (0.5 s and 1 s) at a launcher that carries one net, or
 // reloads for 2 s, launch one net and refuse the other; unlimited, both fly.
+namespace {
+
+// A launcher on the hunter at rest, the intruder flying its figure-8 out of the net's reach, and
+// two fire orders, at 0.5 s and at `second_s`; `net_params` is net_sim's params as YAML.
+RunResult fire_two_orders(const std::string& net_params, double second_s) {
+  EXPECT_TRUE(kestrel::testing::built_plugins().load(KESTREL_TEST_PLUGIN_DIR "/kestrel_test_nodes.so"));
+  const std::string yaml =
+      "kestrel: 1\nname: launcher\nexecutor: {type: lockstep}\nduration: 2.0\nnodes:\n"
+      "  - {id: intruder, type: intruder, params: {shape: figure8, rate_hz: 30}}\n"
+      "  - {id: hunter, type: quadrotor_sim}\n"
+      "  - {id: orders, type: fire_orders, params: {first_s: 0.5, second_s: " +
+      std::to_string(second_s) +
+      "}}\n"
+      "  - {id: net, type: net_sim, params: " +
+      net_params +
+      "}\n"
+      "connections:\n"
+      "  - {from: orders.fire, to: net.fire, policy: fifo 16}\n"
+      "  - {from: hunter.state, to: net.hunter}\n"
+      "  - {from: intruder.truth, to: net.truth, policy: fifo 64}\n";
+  return kestrel::testing::run_built_graph(GraphSource::from_string(yaml, "launcher.yaml"), {});
+}
+
+}  // namespace
+
 TEST(NetSim, ALauncherFiresOnlyTheNetsItCarriesAndWaitsForItsReload) {
-  ASSERT_TRUE(kestrel::testing::built_plugins().load(KESTREL_TEST_PLUGIN_DIR "/kestrel_test_nodes.so"));
   struct Case {
     std::string params;
     int used, refused;
@@ -190,19 +214,7 @@ TEST(NetSim, ALauncherFiresOnlyTheNetsItCarriesAndWaitsForItsReload) {
   for (const Case& c : {Case{"{}", 2, 0}, Case{"{nets: 1}", 1, 1}, Case{"{reload_s: 2.0}", 1, 1},
                         Case{"{nets: 2, reload_s: 0.3}", 2, 0}}) {
     SCOPED_TRACE(c.params);
-    const std::string yaml =
-        "kestrel: 1\nname: launcher\nexecutor: {type: lockstep}\nduration: 2.0\nnodes:\n"
-        "  - {id: intruder, type: intruder, params: {shape: figure8, rate_hz: 30}}\n"
-        "  - {id: hunter, type: quadrotor_sim}\n"
-        "  - {id: orders, type: fire_orders, params: {first_s: 0.5, second_s: 1.0}}\n"
-        "  - {id: net, type: net_sim, params: " +
-        c.params +
-        "}\n"
-        "connections:\n"
-        "  - {from: orders.fire, to: net.fire, policy: fifo 16}\n"
-        "  - {from: hunter.state, to: net.hunter}\n"
-        "  - {from: intruder.truth, to: net.truth, policy: fifo 64}\n";
-    const RunResult r = kestrel::testing::run_built_graph(GraphSource::from_string(yaml, "launcher.yaml"), {});
+    const RunResult r = fire_two_orders(c.params, 1.0);
     ASSERT_EQ(r.outcome, RunOutcome::completed) << (r.errors.empty() ? "" : r.errors.front());
     const auto& control = r.report.at("control");
     EXPECT_EQ(control.at("nets_used"), c.used);
@@ -226,20 +238,9 @@ TEST(NetSim, TheRunEndsOnceTheEngagementIsDecided) {
   EXPECT_EQ(caught.report.at("ended_by").at("node"), "net");
   EXPECT_THAT(caught.report.at("ended_by").at("why").get<std::string>(), ::testing::HasSubstr("caught"));
 
-  // One net, fired at 0.5 s at an intruder far out of its reach: spent once it has flown and
-  // stayed open (0.4 + 0.3 s), then the run ends 0.2 s later, not at its 2 s.
-  ASSERT_TRUE(kestrel::testing::built_plugins().load(KESTREL_TEST_PLUGIN_DIR "/kestrel_test_nodes.so"));
-  const std::string yaml =
-      "kestrel: 1\nname: missed\nexecutor: {type: lockstep}\nduration: 2.0\nnodes:\n"
-      "  - {id: intruder, type: intruder, params: {shape: figure8, rate_hz: 30}}\n"
-      "  - {id: hunter, type: quadrotor_sim}\n"
-      "  - {id: orders, type: fire_orders, params: {first_s: 0.5, second_s: 1.9}}\n"
-      "  - {id: net, type: net_sim, params: {nets: 1, end_after_decided_s: 0.2}}\n"
-      "connections:\n"
-      "  - {from: orders.fire, to: net.fire, policy: fifo 16}\n"
-      "  - {from: hunter.state, to: net.hunter}\n"
-      "  - {from: intruder.truth, to: net.truth, policy: fifo 64}\n";
-  const RunResult missed = kestrel::testing::run_built_graph(GraphSource::from_string(yaml, "missed.yaml"), {});
+  // One net, fired at 0.5 s at an intruder out of its reach: spent once it has flown and stayed
+  // open (0.4 + 0.3 s), then the run ends 0.2 s later, not at its 2 s nor at the second order.
+  const RunResult missed = fire_two_orders("{nets: 1, end_after_decided_s: 0.2}", 1.9);
   ASSERT_EQ(missed.outcome, RunOutcome::completed) << (missed.errors.empty() ? "" : missed.errors.front());
   EXPECT_EQ(missed.report.at("control").at("captured"), false);
   EXPECT_GE(missed.sim_time_s, 0.5 + 0.7 + 0.2);
