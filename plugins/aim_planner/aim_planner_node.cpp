@@ -26,6 +26,7 @@
 #include <optional>
 
 #include "fire_decision.hpp"
+#include "lost_search.hpp"
 #include "motion_axis.hpp"
 #include "oscillation.hpp"
 #include "target_estimate.hpp"
@@ -66,6 +67,7 @@ struct AimPlannerConfig {
   double search_yaw_rate_deg_s = 20.0;
   double back_off_distance_m = 5.0;
   double back_off_height_m = 0.5;
+  double back_off_search_after_s = -1.0;  // < 0: the back-off holds its standoff
   double capture_radius_m = 0.5;
   double last_net_radius_m = 0.3;
   double fire_probability = 0.0;
@@ -88,6 +90,7 @@ struct AimPlannerConfig {
   double swing_min_amplitude_m = 1.0;
   double swing_max_amplitude_m = 4.0;
   double swing_max_residual_m = 0.1;
+  double swing_max_speed_m_s = 1000.0;
   double dwell_s = 0.5;
   double motion_axis_time_s = 0.0;
   AimTilt aim_tilt = AimTilt::level;
@@ -214,8 +217,8 @@ class AimPlannerNode final : public Node {
             "facing where the target was last seen, where the wider view finds it again");
     c.param("search_yaw_rate_deg_s", &C::search_yaw_rate_deg_s)
         .with_unit("deg/s")
-        .range(-360.0, 360.0)
-        .describe("search: turn rate");
+        .range(0.0, 360.0)
+        .describe("search: turn rate, towards the side the target was last heading");
     c.param("back_off_distance_m", &C::back_off_distance_m)
         .with_unit("m")
         .range(0.5, 100.0)
@@ -224,6 +227,12 @@ class AimPlannerNode final : public Node {
         .with_unit("m")
         .range(-100.0, 100.0)
         .describe("back_off: height of the standoff above where the target was last seen");
+    c.param("back_off_search_after_s", &C::back_off_search_after_s)
+        .with_unit("s")
+        .range(-1.0, 1000.0)
+        .describe(
+            "back_off: this long after the loss with nothing seen, turn at search_yaw_rate_deg_s as search does; "
+            "< 0: hold the standoff");
     c.param("capture_radius_m", &C::capture_radius_m)
         .with_unit("m")
         .range(0.01, 10.0)
@@ -279,6 +288,12 @@ class AimPlannerNode final : public Node {
             "aim_at swing_centre: the largest RMS residual of the swing's sinusoid: a less regular swing (a line flown "
             "back and forth at a cruise) comes through the centre at a time the fit does not predict well enough, "
             "and is followed");
+    c.param("swing_max_speed_m_s", &C::swing_max_speed_m_s)
+        .with_unit("m/s")
+        .range(0.0, 1000.0)
+        .describe(
+            "aim_at swing_centre: the fastest swing waited for (peak speed over its swinging axes): a faster one "
+            "crosses the net's opening too quickly for the fit's timing, and is followed");
     c.param("fire_probability", &C::fire_probability)
         .range(0.0, 1.0)
         .describe(
@@ -496,7 +511,7 @@ class AimPlannerNode final : public Node {
       const SwingAim aimed = cfg_.aim_at == AimPlannerConfig::AimAt::swing_centre && oscillation_
                                  ? swing_centre_aim(*oscillation_, x.head<3>(), x.segment<3>(3),
                                                     SwingBounds{cfg_.swing_min_amplitude_m, cfg_.swing_max_amplitude_m,
-                                                                cfg_.swing_max_residual_m})
+                                                                cfg_.swing_max_residual_m, cfg_.swing_max_speed_m_s})
                                  : SwingAim{x.head<3>(), x.segment<3>(3), {}};
       goal_velocity_ = aimed.velocity;
       goal_ = aim_pose(aimed.position, hunter->position, geometry::yaw_of(hunter->orientation),
@@ -506,6 +521,7 @@ class AimPlannerNode final : public Node {
       goal_->position.z() = std::max(goal_->position.z(), cfg_.min_altitude_m);
       last_seen_ = t;
       last_target_ = x.head<3>();
+      last_target_velocity_ = x.segment<3>(3);
       error = cfg_.aim_point_m - in_camera;
       ++target_frames_;
       squared_error_ += error->squaredNorm();
@@ -543,13 +559,21 @@ class AimPlannerNode final : public Node {
       if (!holding_) {
         ++holds_;
         standoff_ = back_off_pose(*hunter);
+        search_turn_ = search_side(reference_->yaw(), hunter->position,
+                                   expected_position(last_target_, last_target_velocity_, t - last_seen_));
       }
       holding_ = true;
-      if (cfg_.when_lost == AimPlannerConfig::WhenLost::back_off) {
+      using L = AimPlannerConfig::WhenLost;
+      const bool searching =
+          cfg_.when_lost == L::search || (cfg_.when_lost == L::back_off && cfg_.back_off_search_after_s >= 0.0 &&
+                                          t - last_seen_ >= cfg_.target_timeout_s + cfg_.back_off_search_after_s);
+      if (searching) {
+        ++search_frames_;
+        reference_->hold(dt, search_turn_ * cfg_.search_yaw_rate_deg_s * M_PI / 180.0);
+      } else if (cfg_.when_lost == L::back_off) {
         reference_->advance(standoff_, Eigen::Vector3d::Zero(), dt);
       } else {
-        const bool search = cfg_.when_lost == AimPlannerConfig::WhenLost::search;
-        reference_->hold(dt, search ? cfg_.search_yaw_rate_deg_s * M_PI / 180.0 : 0.0);
+        reference_->hold(dt, 0.0);
       }
     } else {
       // No target yet: climb, then look ahead (once at the take-off height: a hunter on the ground
@@ -722,6 +746,7 @@ class AimPlannerNode final : public Node {
                 .metric("holds", holds_, "", Better::lower)
                 .quantity("ground_frames", ground_frames_)
                 .quantity("terminal_frames", terminal_frames_)
+                .quantity("search_frames", search_frames_)
                 .quantity("first_seen_range_m", first_seen_range_ ? nlohmann::json(*first_seen_range_) : nullptr, "m")
                 .markdown(fmt::format("Target in {} of {} frames; aim error (from the tracks) {} m RMS; {} shot(s), "
                                       "the first at {}; held {} time(s) after losing the target.\n",
@@ -798,6 +823,8 @@ class AimPlannerNode final : public Node {
   net::NetModel net_{{cfg_.net_open_point_m, cfg_.net_flight_time_s, cfg_.capture_radius_m, cfg_.net_open_s}};
   AimPose takeoff_, search_, standoff_;
   Eigen::Vector3d last_target_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d last_target_velocity_ = Eigen::Vector3d::Zero();
+  double search_turn_ = 1.0;  // +1 counter-clockwise, -1 clockwise: where the lost target went (search_side)
   Eigen::Vector3d tilt_acceleration_ = Eigen::Vector3d::Zero();  // aim_tilt target: the low-passed estimate
   std::optional<AimPose> goal_;
   std::optional<TargetEstimate> estimate_;
@@ -810,7 +837,8 @@ class AimPlannerNode final : public Node {
   double last_seen_ = 0.0;
   double estimate_since_ = 0.0;  // s: when the current estimate started
   bool holding_ = false, armed_ = false;
-  std::uint64_t frames_ = 0, target_frames_ = 0, fire_count_ = 0, holds_ = 0, ground_frames_ = 0, terminal_frames_ = 0;
+  std::uint64_t frames_ = 0, target_frames_ = 0, fire_count_ = 0, holds_ = 0, ground_frames_ = 0, terminal_frames_ = 0,
+                search_frames_ = 0;
   double squared_error_ = 0.0;
 };
 KESTREL_REGISTER_NODE(AimPlannerNode)

@@ -115,6 +115,10 @@ SwingAim swing_centre_aim(const OscillationPredictor& oscillation, const Eigen::
     return fitted(o) && std::hypot(o->a, o->b) >= bounds.min_amplitude_m;
   });
   if (!wide) return aim;
+  double peak_speed_squared = 0.0;
+  for (const auto& o : oscillation.axes())
+    if (fitted(o)) peak_speed_squared += std::pow(std::hypot(o->a, o->b) * o->omega_rad_s, 2);
+  if (std::sqrt(peak_speed_squared) > bounds.max_speed_m_s) return aim;
   // A swing wide enough to wait for: wait at its centre on every axis that swings, the narrow ones
   // too. A line flown obliquely, or a figure-8, passes through the centre of each of its swings at
   // once; an axis left following its narrow swing lags it, and the net, by up to that swing.

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <deque>
+#include <limits>
 #include <optional>
 
 namespace kestrel::aim {
@@ -71,6 +72,10 @@ struct SwingBounds {
   double min_amplitude_m = 1.0;
   double max_amplitude_m = 4.0;
   double max_residual_m = 0.1;
+  /// The fastest swing waited for (its peak speed, sqrt(sum (amplitude omega)^2) over the swinging
+  /// axes): a faster one crosses the net's opening too quickly for the timing the fit gives, and is
+  /// followed, which brings the relative speed down.
+  double max_speed_m_s = std::numeric_limits<double>::infinity();
 };
 SwingAim swing_centre_aim(const OscillationPredictor& oscillation, const Eigen::Vector3d& position,
                           const Eigen::Vector3d& velocity, const SwingBounds& bounds);

@@ -94,7 +94,10 @@ TEST(ClosedLoop, TheInterceptionIsReproducibleBitForBit) {
 // parts copied beside it, the aim part edited).
 namespace {
 
-void expect_a_blackout_to_make_the_hunter_hold_then_reacquire(const std::string& graph) {
+// `sets`: overrides of the graph's parameters; `searches`: whether the hunter is to turn to search
+// during the blackout (aim.back_off_search_after_s).
+void expect_a_blackout_to_make_the_hunter_hold_then_reacquire(const std::string& graph,
+                                                              const std::vector<std::string>& sets, bool searches) {
   std::ifstream in(KESTREL_SOURCE_DIR "/graphs/parts/intercept_aim.yaml");
   std::string yaml{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   const auto replace = [&](const std::string& from, const std::string& to) {
@@ -115,13 +118,19 @@ void expect_a_blackout_to_make_the_hunter_hold_then_reacquire(const std::string&
   std::ofstream(dir / "parts" / "intercept_aim.yaml") << yaml;
   std::filesystem::copy_file(KESTREL_SOURCE_DIR "/graphs/" + graph + ".yaml", dir / (graph + ".yaml"),
                              std::filesystem::copy_options::overwrite_existing);
-  const RunResult r = run((dir / (graph + ".yaml")).string(), {}, {}, 10.0);  // time for the capture after the blackout
+  const RunResult r =
+      run((dir / (graph + ".yaml")).string(), sets, {}, 10.0);  // time for the capture after the blackout
   std::filesystem::remove_all(dir);
   ASSERT_EQ(r.outcome, RunOutcome::completed) << (r.errors.empty() ? "" : r.errors.front());
   const auto& aim = r.report.at("aim");
   // The 2 s gap outlasts the 1 s timeout: a hold (here, backing off); once caught, the intruder
   // falls out of view and the hunter holds again. Without the blackout, only the second.
   EXPECT_GE(aim.at("holds").get<int>(), 2);
+  // Backed off, then (where asked) turned on the spot for what is left of the 2 s.
+  if (searches)
+    EXPECT_GT(aim.at("search_frames").get<int>(), 0);
+  else
+    EXPECT_EQ(aim.at("search_frames").get<int>(), 0);
   EXPECT_EQ(r.report.at("hunter").at("touchdowns"), 0);
   EXPECT_EQ(r.report.at("control").at("captured"), true);
   ASSERT_TRUE(r.report.at("control").at("time_to_capture_s").is_number());
@@ -133,11 +142,13 @@ void expect_a_blackout_to_make_the_hunter_hold_then_reacquire(const std::string&
 // With the rendered camera and its whole chain (under ASan, the detection-level loop below runs
 // the same aim; tests/sanitizers/asan-skip.txt).
 TEST(ClosedLoop, ABlackoutMakesTheHunterHoldThenReacquire) {
-  expect_a_blackout_to_make_the_hunter_hold_then_reacquire("sim_intercept");
+  expect_a_blackout_to_make_the_hunter_hold_then_reacquire("sim_intercept", {}, false);
 }
 
 TEST(ClosedLoop, ABlackoutOfTheDetectionLevelCameraMakesTheHunterHoldThenReacquire) {
-  expect_a_blackout_to_make_the_hunter_hold_then_reacquire("sim_intercept_fast");
+  // Turning to search 0.5 s after the back-off begins: the intruder is found again all the same.
+  expect_a_blackout_to_make_the_hunter_hold_then_reacquire("sim_intercept_fast", {"aim.back_off_search_after_s=0.5"},
+                                                           true);
 }
 
 // The loop with the detection-level camera: reproducible bit for bit too, and it flies the

@@ -119,9 +119,12 @@ TEST(Oscillation, TheSwingCentreAimWaitsWhereTheWideSwingComesThrough) {
   EXPECT_EQ(aim.velocity.z(), 0.0);
   EXPECT_EQ(aim.position.x(), position.x());  // the depth, which does not swing, as it is
   EXPECT_EQ(aim.velocity.x(), velocity.x());
-  // Swings narrower or wider than the bounds, or fitted less closely, leave the target as it is.
-  for (const SwingBounds& bounds :
-       {SwingBounds{2.5, 4.0, 0.1}, SwingBounds{0.1, 0.4, 0.1}, SwingBounds{0.1, 4.0, 0.0}}) {
+  // Its peak speed is sqrt((2 m * 2/s)^2 + (0.5 m * 4/s)^2) = 4.47 m/s: a bound above it still waits.
+  EXPECT_EQ(swing_centre_aim(predictor, position, velocity, SwingBounds{1.0, 4.0, 0.1, 4.6}).waiting,
+            (std::array<bool, 3>{false, true, true}));
+  // Swings narrower or wider than the bounds, fitted less closely, or faster, leave the target as it is.
+  for (const SwingBounds& bounds : {SwingBounds{2.5, 4.0, 0.1}, SwingBounds{0.1, 0.4, 0.1}, SwingBounds{0.1, 4.0, 0.0},
+                                    SwingBounds{1.0, 4.0, 0.1, 4.3}}) {
     const SwingAim follow = swing_centre_aim(predictor, position, velocity, bounds);
     EXPECT_EQ(follow.waiting, (std::array<bool, 3>{})) << bounds.min_amplitude_m << " to " << bounds.max_amplitude_m;
     EXPECT_EQ(follow.position, position);
