@@ -70,7 +70,7 @@ endfunction()
 
 # kestrel_add_test(NAME SOURCES file.cpp... [LIBRARIES target...] LABELS label...
 #                  [SUITE_LABELS "pattern=label,..." ...] [TIMEOUT s] [SERIAL] [RESOURCE_LOCK name]
-#                  [LOADS target...])
+#                  [LOADS target...] [ASAN_SKIPPED])
 #
 # A GoogleTest program, registered test by test with CTest. LABELS are the CTest labels of its
 # tests (each plugin's tests carry its folder's name); SERIAL runs them alone (realtime tests that
@@ -78,10 +78,12 @@ endfunction()
 # that talk on DDS domains, chosen from the process id, which two tests could share). LOADS names what the tests load or run at run time without linking it (plugins,
 # the CLI, test plugins): they are built first. A target of LOADS that does not exist (a plugin
 # folder deleted) is left out, so that the rest still builds; the tests that need it then fail.
+# ASAN_SKIPPED: every test of the program is in tests/sanitizers/asan-skip.txt, so the ASan build
+# neither builds nor registers it (check_asan_skip.py fails if a test of it is not listed there).
 # Test code is built at -O1 even in Release: it compiles about a third faster, and what the tests
 # spend their time in (the runtime, the plugins, the libraries) keeps its own -O3.
 function(kestrel_add_test name)
-  cmake_parse_arguments(ARG "SERIAL" "TIMEOUT;RESOURCE_LOCK" "SOURCES;LIBRARIES;LABELS;SUITE_LABELS;LOADS" ${ARGN})
+  cmake_parse_arguments(ARG "SERIAL;ASAN_SKIPPED" "TIMEOUT;RESOURCE_LOCK" "SOURCES;LIBRARIES;LABELS;SUITE_LABELS;LOADS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_LIBRARIES} kestrel_test_support GTest::gmock GTest::gtest_main
                                         kestrel_warnings)
@@ -89,6 +91,11 @@ function(kestrel_add_test name)
   target_compile_options(${name} PRIVATE $<$<CONFIG:Release>:-O1>)
   if(ARG_LOADS)
     cmake_language(EVAL CODE "cmake_language(DEFER DIRECTORY [[${CMAKE_SOURCE_DIR}]] CALL kestrel_add_existing_dependencies [[${name}]] ${ARG_LOADS})")
+  endif()
+  if(ARG_ASAN_SKIPPED AND KESTREL_SANITIZE MATCHES "address")
+    set_target_properties(${name} PROPERTIES EXCLUDE_FROM_ALL TRUE)
+    set_property(GLOBAL APPEND PROPERTY KESTREL_ASAN_UNBUILT_TESTS ${name})
+    return()
   endif()
   set(options "")
   if(ARG_SERIAL)

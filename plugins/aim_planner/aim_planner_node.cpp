@@ -29,6 +29,7 @@
 #include "lost_search.hpp"
 #include "motion_axis.hpp"
 #include "oscillation.hpp"
+#include "sighted_track.hpp"
 #include "target_estimate.hpp"
 
 namespace kestrel::aim {
@@ -57,6 +58,7 @@ struct AimPlannerConfig {
   double min_target_height_m = 0.5;
   double target_timeout_s = 1.0;
   double reacquire_m = 1.0;
+  bool follow_sighted_track = false;
   double target_q = 1.0;
   double target_r = 1.0;
   TargetFilterConfig::Model target_filter = TargetFilterConfig::Model::constant_acceleration;
@@ -182,6 +184,12 @@ class AimPlannerNode final : public Node {
         .describe(
             "a new track whose sighting lies within this of the world estimate's prediction continues that estimate "
             "(the same intruder, its track restarted); 0: every new track starts a new estimate");
+    c.param("follow_sighted_track", &C::follow_sighted_track)
+        .describe(
+            "when the selected track has no detection this frame (it coasts, or is ground clutter), follow another "
+            "track's detection where the world estimate expects the target, within reacquire_m: a camera that pitches "
+            "fast breaks its tracks in the camera frame, and the selector keeps the old, coasting one; false: follow "
+            "the selected track only (the paper's)");
     c.param("target_q", &C::target_q)
         .with_unit("m^2/s^5")
         .range(0.0, 1e6)
@@ -476,6 +484,11 @@ class AimPlannerNode final : public Node {
       oscillation_.reset();
     }
     if (estimate_) estimate_->predict(dt);
+    if (!target && estimate_ && cfg_.follow_sighted_track) {
+      target = sighted_track(*tracks, camera, cfg_.min_target_height_m, estimate_->state().head<3>(),
+                             [&](const Eigen::Vector3d& sighting) { return expected_near(t, sighting); });
+      if (target) ++sighted_track_frames_;
+    }
     if (target) {
       // The target is estimated again in the world frame, from what was seen of it there: its
       // velocity in the camera frame would include the hunter's own motion, and feeding that
@@ -747,6 +760,7 @@ class AimPlannerNode final : public Node {
                 .quantity("ground_frames", ground_frames_)
                 .quantity("terminal_frames", terminal_frames_)
                 .quantity("search_frames", search_frames_)
+                .quantity("sighted_track_frames", sighted_track_frames_)
                 .quantity("first_seen_range_m", first_seen_range_ ? nlohmann::json(*first_seen_range_) : nullptr, "m")
                 .markdown(fmt::format("Target in {} of {} frames; aim error (from the tracks) {} m RMS; {} shot(s), "
                                       "the first at {}; held {} time(s) after losing the target.\n",
@@ -838,7 +852,7 @@ class AimPlannerNode final : public Node {
   double estimate_since_ = 0.0;  // s: when the current estimate started
   bool holding_ = false, armed_ = false;
   std::uint64_t frames_ = 0, target_frames_ = 0, fire_count_ = 0, holds_ = 0, ground_frames_ = 0, terminal_frames_ = 0,
-                search_frames_ = 0;
+                sighted_track_frames_ = 0, search_frames_ = 0;
   double squared_error_ = 0.0;
 };
 KESTREL_REGISTER_NODE(AimPlannerNode)

@@ -24,25 +24,30 @@ depends=$(dpkg-deb -f "$deb" Depends)
 echo "Depends: $depends"
 dpkg -x "$deb" "$work/root"
 root=$work/root
-declare -A dep_names=() libs=() owners=()
+declare -A dep_names=() libs=() owners=() needed=() paths_named=()
 while IFS= read -r name; do dep_names[$name]=1; done < <(tr ',|' '\n\n' <<<"$depends" | awk 'NF {print $1}')
-# The libraries the packaged binaries link directly, resolved on this machine.
+# The libraries the packaged binaries link directly, resolved on this machine (looked up in bash
+# arrays, not by a process per line of ldd's output or per pair of paths: thousands fewer).
 while IFS= read -r f; do
   head -c 4 "$f" | grep -q 'ELF' || continue
-  needed=$(readelf -d "$f" | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p')
+  needed=()
+  while IFS= read -r soname; do [ -z "$soname" ] || needed[$soname]=1; done \
+    < <(readelf -d "$f" | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p')
   while read -r soname path; do
-    grep -qxF "$soname" <<<"$needed" || continue
+    [ -n "$soname" ] && [ -n "${needed[$soname]:-}" ] || continue
     case "$path" in "$root"/*) ;; *) libs[$path]="${libs[$path]:-} ${f##*/}" ;; esac
   done < <(ldd "$f" | sed -n 's/^\s*\(\S*\) => \(\S*\) .*/\1 \2/p')
 done < <(find "$root" -type f \( -path '*/bin/*' -o -name '*.so*' \))
 # Their packages (one dpkg query; /lib and /usr/lib are the same folder on Debian 12).
 patterns=()
-for path in "${!libs[@]}"; do patterns+=("*$(basename "$(dirname "$path")")/$(basename "$path")"); done
+for path in "${!libs[@]}"; do
+  dir=${path%/*}
+  patterns+=("*${dir##*/}/${path##*/}")
+  paths_named[${path##*/}]+=" ${path##*/}"  # one entry per linked path of that file name
+done
 while IFS= read -r line; do
   pkg=${line%%: *} file=${line#*: }
-  for path in "${!libs[@]}"; do
-    [ "$(basename "$path")" = "$(basename "$file")" ] && owners[${pkg%%:*}]+=" $(basename "$path")"
-  done
+  if [ -n "${paths_named[${file##*/}]:-}" ]; then owners[${pkg%%:*}]+=${paths_named[${file##*/}]}; fi
 done < <(dpkg -S "${patterns[@]}" 2>/dev/null | grep -v '^diversion')
 status=0
 for pkg in "${!owners[@]}"; do
