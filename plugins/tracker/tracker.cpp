@@ -12,6 +12,8 @@
 //
 // Every number belongs to the component that uses it; the node only names the components.
 // This plugin also provides the components that need no other library.
+#include <kestrel/geometry/frames.hpp>
+#include <kestrel/messages/vehicle_state.hpp>
 #include <kestrel/plugin.hpp>
 #include <kestrel/tracking/deleter.hpp>
 #include <kestrel/tracking/imm_filter.hpp>
@@ -19,6 +21,9 @@
 #include <kestrel/tracking/kalman_filter.hpp>
 #include <kestrel/tracking/selector.hpp>
 #include <kestrel/tracking/tracker_node.hpp>
+#include <kestrel/vehicle/state_history.hpp>
+
+#include "tracks_in_world.hpp"
 
 namespace kestrel::tracking {
 
@@ -28,6 +33,7 @@ struct TrackerConfig {
   ComponentConfig initiator;
   ComponentConfig deleter;
   ComponentConfig selector;
+  Eigen::Vector3d camera_offset_m{0.1, 0.0, 0.0};
 };
 
 class Tracker final : public TrackerNode {
@@ -47,6 +53,10 @@ class Tracker final : public TrackerNode {
         .describe(
             "which confirmed track is the target: longest_living (the paper's), most_hits, nearest or "
             "most_confident; a tie goes to the oldest track");
+    c.param("camera_offset_m", &TrackerConfig::camera_offset_m)
+        .with_unit("m")
+        .range(-10.0, 10.0)
+        .describe("with pose connected: the camera's position in the body frame of the vehicle carrying it");
     return with_ports(NodeSpec("tracker", "Multi-target tracker made of swappable components (paper, 2.3)"))
         .details(
             "Each frame: every track's filter predicts to the frame's time; the associator pairs tracks with "
@@ -54,14 +64,51 @@ class Tracker final : public TrackerNode {
             "tracks and the deleter ends confirmed ones; each detection no track claimed starts a tentative "
             "track; the selector chooses the target among the confirmed tracks, which alone are published. The "
             "defaults are the paper's tracker: Kalman filter with q = r = p = 1, Hungarian association within "
-            "1.0 m, a track published at birth, deleted after 10 misses, the longest-living track as the target.")
+            "1.0 m, a track published at birth, deleted after 10 misses, the longest-living track as the target. "
+            "With `pose` connected (the vehicle carrying the camera), the tracks are kept in the world: each "
+            "frame's detections are taken there with the camera's pose at the capture, and the tracks are "
+            "published in that frame's camera frame again; a camera that turns then no longer moves its targets' "
+            "tracks (the selector `nearest` then measures from the world's origin). Frames before the first pose "
+            "are tracked in the camera frame.")
+        .input(kPose,
+               "every state of the vehicle carrying the camera (kept 2 s); unconnected: the tracks are kept "
+               "in the detections' frame (the paper's)",
+               {.optional = true})
         .config(std::move(c));
   }
+
+  static constexpr Input<msg::VehicleState> kPose{"pose"};
 
   explicit Tracker(NodeInit& init)
       : TrackerNode(TrackerParts{init.make_component<Filter>("filter"), init.make_component<Associator>("associator"),
                                  init.make_component<Initiator>("initiator"), init.make_component<Deleter>("deleter"),
-                                 init.make_component<Selector>("selector")}) {}
+                                 init.make_component<Selector>("selector")}),
+        camera_offset_m_(init.config<TrackerConfig>().camera_offset_m) {}
+
+  void process(Context& ctx) override {
+    if (ctx.triggered_by(kPose)) {
+      poses_.add(*ctx.get(kPose));
+      return;
+    }
+    const auto pose = poses_.at(ctx.get(kDetections)->stamp);
+    if (!pose) {  // pose unconnected, or none yet: the detections' own frame
+      TrackerNode::process(ctx);
+      return;
+    }
+    const auto detections = ctx.get(kDetections);
+    const geometry::CameraPose camera = geometry::camera_on_body(pose->position, pose->orientation, camera_offset_m_);
+    std::vector<Eigen::Vector3d> in_world;
+    in_world.reserve(detections->items.size());
+    for (const auto& d : detections->items) in_world.push_back(camera.to_world(d.position));
+    msg::Tracks tracks = step(detections->stamp, in_world);
+    for (msg::Track& t : tracks.items) t = track_in_camera(std::move(t), camera);
+    tracks.frame = detections->frame;
+    ctx.publish(kTracks, std::move(tracks));
+  }
+
+ private:
+  Eigen::Vector3d camera_offset_m_;
+  vehicle::StateHistory poses_;
 };
 KESTREL_REGISTER_NODE(Tracker)
 

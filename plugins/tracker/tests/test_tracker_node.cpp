@@ -2,12 +2,15 @@
 // detections (and their stamps) the test chooses; a probe puts the tracks into the report.
 #include <gmock/gmock.h>
 
+#include <cmath>
 #include <kestrel/plugin.hpp>
 #include <string>
 #include <vector>
 
+#include "kestrel/geometry/frames.hpp"
 #include "kestrel/messages/detections.hpp"
 #include "kestrel/messages/tracks.hpp"
+#include "kestrel/messages/vehicle_state.hpp"
 #include "kestrel/runtime/graph.hpp"
 #include "kestrel/runtime/plugin_host.hpp"
 #include "kestrel/runtime/run.hpp"
@@ -56,6 +59,47 @@ class DetectionReplay final : public Node {
   std::size_t next_ = 0;
 };
 
+// A hunter hovering 3 m up that pitches back and forth (0.3 rad at 1.5 Hz), its camera 0.1 m ahead of
+// its centre, seeing a target that hangs still at (6, 0.5, 3.5): the target's detections, in the
+// camera frame, and the hunter's states, each published a frame ahead of the detections it takes to
+// the world.
+class PitchingCamera final : public Node {
+ public:
+  static constexpr Output<msg::Detections> kDetections{"detections"};
+  static constexpr Output<msg::VehicleState> kPose{"pose"};
+  static NodeSpec spec() {
+    return NodeSpec("pitching_camera", "A still target seen from a pitching hunter, and the hunter's states")
+        .output(kDetections, "the target, camera frame")
+        .output(kPose, "the hunter's state, a frame ahead");
+  }
+  explicit PitchingCamera(NodeInit& init) { init.set_rate(30.0); }
+  static msg::VehicleState state(double t) {
+    msg::VehicleState s;
+    s.stamp = from_seconds(t);
+    s.position = Eigen::Vector3d(0.0, 0.0, 3.0);
+    s.orientation =
+        Eigen::Quaterniond(Eigen::AngleAxisd(0.3 * std::sin(2.0 * M_PI * 1.5 * t), Eigen::Vector3d::UnitY()));
+    return s;
+  }
+  void tick(Context& ctx) override {
+    const double t = next_ / 30.0;
+    if (next_ == 0) ctx.publish(kPose, state(t));
+    ctx.publish(kPose, state(t + 1.0 / 30.0));
+    const msg::VehicleState now = state(t);
+    const auto camera = geometry::camera_on_body(now.position, now.orientation, Eigen::Vector3d(0.1, 0.0, 0.0));
+    msg::Detections out;
+    out.stamp = from_seconds(t);
+    msg::Detection d;
+    d.position = camera.to_camera(Eigen::Vector3d(6.0, 0.5, 3.5));
+    out.items.push_back(d);
+    ctx.publish(kDetections, std::move(out));
+    if (++next_ == 91) ctx.end_of_stream();
+  }
+
+ private:
+  int next_ = 0;
+};
+
 // The last frame's tracks and every frame's target, into the report under the probe's id.
 class TracksProbe final : public Node {
  public:
@@ -87,6 +131,7 @@ PluginHost& host() {
     auto* p = &kestrel::testing::built_plugins();
     detail::register_node<DetectionReplay>(p->registry());
     detail::register_node<TracksProbe>(p->registry());
+    detail::register_node<PitchingCamera>(p->registry());
     return p;
   }();
   return *h;
@@ -219,4 +264,42 @@ TEST(TrackerNode, OverridesReachIntoComponents) {
   EXPECT_FALSE(bad.graph);
   EXPECT_THAT(bad.diagnostics.str(), ::testing::HasSubstr("unknown filter 'ukf'"));
   EXPECT_THAT(bad.diagnostics.str(), ::testing::HasSubstr("imm, kalman, particle"));
+}
+
+// A camera that pitches moves a still target across its frame: tracked there, the track learns the
+// camera's motion as the target's. Given the hunter's states (`pose`), the tracker keeps the track in
+// the world, where the target is still, and publishes it in the camera frame of each frame.
+TEST(TrackerNode, GivenTheCamerasPoseATargetStaysStillWhileTheCameraPitches) {
+  const auto yaml = [](bool with_pose) {
+    return std::string(
+               "kestrel: 1\nname: pitching\nexecutor: lockstep\nnodes:\n"
+               "  - {id: camera, type: pitching_camera}\n"
+               "  - {id: tracker, type: tracker, params: {filter: {type: kalman, q: 10.0, r: 0.05, p: 1.0}}}\n"
+               "  - {id: probe, type: tracks_probe}\n"
+               "connections:\n"
+               "  - {from: camera.detections, to: tracker.detections, policy: fifo 256}\n"
+               "  - {from: tracker.tracks, to: probe.tracks, policy: fifo 256}\n") +
+           (with_pose ? "  - {from: camera.pose, to: tracker.pose, policy: fifo 256}\n" : "");
+  };
+  // The last frame, at 3 s, where the camera pitches fastest (1.5 Hz: 4.5 periods), and where it
+  // sees the target then.
+  const msg::VehicleState last = PitchingCamera::state(3.0);
+  const Eigen::Vector3d seen = geometry::camera_on_body(last.position, last.orientation, Eigen::Vector3d(0.1, 0.0, 0.0))
+                                   .to_camera(Eigen::Vector3d(6.0, 0.5, 3.5));
+
+  const auto world = run(yaml(true));
+  ASSERT_EQ(world.outcome, RunOutcome::completed) << (world.errors.empty() ? "" : world.errors.front());
+  EXPECT_EQ(world.report.at("tracker").at("tracks_started"), 1);
+  const auto& kept = world.report.at("probe").at("tracks");
+  ASSERT_EQ(kept.size(), 1u);
+  EXPECT_EQ(kept[0].at("hits"), 91);
+  EXPECT_LT((position(kept[0]) - seen).norm(), 0.05);  // published in the camera frame
+  EXPECT_LT(velocity(kept[0]).norm(), 0.1);            // the target's own motion: none
+
+  // In the camera frame the same target moves at the pitch rate times its range (17 m/s at the peak).
+  const auto camera = run(yaml(false));
+  ASSERT_EQ(camera.outcome, RunOutcome::completed) << (camera.errors.empty() ? "" : camera.errors.front());
+  const auto& moving = camera.report.at("probe").at("tracks");
+  ASSERT_FALSE(moving.empty());
+  EXPECT_GT(velocity(moving.back()).norm(), 1.5);
 }

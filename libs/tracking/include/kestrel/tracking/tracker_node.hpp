@@ -26,6 +26,13 @@ class TrackerNode : public Node {
   /// Reports what the tracker did (TrackerCounts) under the node's id.
   void finish(Context& ctx) override;
 
+ protected:
+  /// One frame of detections' positions, in the frame the tracks are kept in, for a node type
+  /// that keeps them in another frame than the detections'.
+  msg::Tracks step(Time stamp, const std::vector<Eigen::Vector3d>& positions) {
+    return manager_.step(stamp, positions);
+  }
+
  private:
   TrackManager manager_;
 };
