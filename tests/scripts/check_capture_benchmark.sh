@@ -106,3 +106,27 @@ if scripts/capture-benchmark "$out/bad" --seeds 1 --rendered 0 --shapes evade,lo
   echo "an unknown shape was accepted" >&2
   exit 1
 fi
+
+# Another graph on the same engagements: a variant that includes the shipped graph and changes a
+# parameter; every run's report names it.
+variant=$out/variant
+mkdir -p "$variant"
+cat > "$variant/variant.yaml" <<YAML
+kestrel: 1
+name: sim_intercept_fast_variant
+executor: {type: lockstep, default_policy: latest}
+include:
+  - {file: $PWD/graphs/sim_intercept_fast.yaml, set: {aim.cooldown_s: 2.5}}
+YAML
+scripts/capture-benchmark "$variant/out" --seeds 1 --rendered 0 --duration 4 --graph "$variant/variant.yaml" > /dev/null
+python3 - "$variant/out" <<'PY'
+import json, os, sys
+runs = os.path.join(sys.argv[1], "fast", "runs")
+names = [json.load(open(os.path.join(runs, n, "report.json")))["graph"]["name"] for n in sorted(os.listdir(runs))]
+assert names == ["sim_intercept_fast_variant"], names
+PY
+scripts/capture-benchmark --help | grep -q -- "--graph FILE" || { echo "--help does not list --graph" >&2; exit 1; }
+if scripts/capture-benchmark --seeds 3 > /dev/null 2>&1; then
+  echo "an option was taken for the output directory" >&2
+  exit 1
+fi
