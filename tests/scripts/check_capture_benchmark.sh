@@ -125,6 +125,14 @@ runs = os.path.join(sys.argv[1], "fast", "runs")
 names = [json.load(open(os.path.join(runs, n, "report.json")))["graph"]["name"] for n in sorted(os.listdir(runs))]
 assert names == ["sim_intercept_fast_variant"], names
 PY
+# A graph that is not there ends the benchmark with the sweep's own words, not a traceback.
+if scripts/capture-benchmark "$variant/missing" --seeds 1 --rendered 0 --graph "$variant/none.yaml" \
+    > /dev/null 2> "$variant/missing.err"; then
+  echo "a missing graph was flown" >&2
+  exit 1
+fi
+grep -q "ran nothing" "$variant/missing.err" && grep -q "none.yaml" "$variant/missing.err" \
+  && ! grep -q Traceback "$variant/missing.err" || { cat "$variant/missing.err" >&2; exit 1; }
 scripts/capture-benchmark --help | grep -q -- "--graph FILE" || { echo "--help does not list --graph" >&2; exit 1; }
 if scripts/capture-benchmark --seeds 3 > /dev/null 2>&1; then
   echo "an option was taken for the output directory" >&2
