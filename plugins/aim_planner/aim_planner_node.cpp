@@ -26,6 +26,7 @@
 #include <optional>
 
 #include "fire_decision.hpp"
+#include "line_patrol.hpp"
 #include "lost_search.hpp"
 #include "motion_axis.hpp"
 #include "oscillation.hpp"
@@ -95,6 +96,12 @@ struct AimPlannerConfig {
   double swing_max_speed_m_s = 1000.0;
   double dwell_s = 0.5;
   double motion_axis_time_s = 0.0;
+  double patrol_min_length_m = 0.0;  // 0: never wait at a patrol's end
+  double patrol_window_s = 8.0;
+  double patrol_max_residual_m = 0.12;
+  double patrol_timeout_s = 6.0;
+  double patrol_max_deceleration_m_s2 = 10.0;
+  double patrol_fire_probability = 0.8;
   AimTilt aim_tilt = AimTilt::level;
   double aim_tilt_share = 1.0;
   double aim_tilt_time_s = 0.5;
@@ -371,6 +378,39 @@ class AimPlannerNode final : public Node {
             "stand on the target's axis of motion (the principal direction of its horizontal velocity, averaged over "
             "this long), so that the net sweeps along its path and only its manoeuvre across it counts against the "
             "net's radius; 0: stand on the line of sight, where the hunter happens to be (the paper's)");
+    c.param("patrol_min_length_m", &C::patrol_min_length_m)
+        .with_unit("m")
+        .range(0.0, 1000.0)
+        .describe(
+            "wait for a target that flies a line back and forth (a patrol) at least this long beyond the end where it "
+            "was seen to turn, facing along the line with the end at x_E^d: it comes straight at the net and stops "
+            "where the net opens, instead of crossing it at its cruise; 0: never (the paper's)");
+    c.param("patrol_window_s", &C::patrol_window_s)
+        .with_unit("s")
+        .range(0.5, 600.0)
+        .describe("patrol_min_length_m: the sightings the patrol's line is fitted to");
+    c.param("patrol_max_residual_m", &C::patrol_max_residual_m)
+        .with_unit("m")
+        .range(0.0, 100.0)
+        .describe("patrol_min_length_m: the largest RMS distance of the sightings off the line");
+    c.param("patrol_timeout_s", &C::patrol_timeout_s)
+        .with_unit("s")
+        .range(0.0, 3600.0)
+        .describe(
+            "patrol_min_length_m: how long the hunter waits at the patrol's end with the target out of sight (beyond "
+            "the camera's range at the far end) before it backs off as when_lost says");
+    c.param("patrol_max_deceleration_m_s2", &C::patrol_max_deceleration_m_s2)
+        .with_unit("m/s^2")
+        .range(0.1, 100.0)
+        .describe(
+            "patrol_min_length_m: the shot predicts the target braking into its turn as hard as its turns showed "
+            "(until "
+            "one is measured, evenly to rest at the end it flies towards, v^2 / 2d), at most this hard");
+    c.param("patrol_fire_probability", &C::patrol_fire_probability)
+        .range(0.0, 1.0)
+        .describe(
+            "patrol_min_length_m, with fire_probability: the probability a shot waits for while the hunter waits at "
+            "the patrol's end (the target comes back every turn: a marginal shot is not worth a net)");
     c.choice("aim_tilt", &C::aim_tilt,
              {{"level", C::AimTilt::level}, {"target", C::AimTilt::target}, {"hunter", C::AimTilt::hunter}})
         .describe(
@@ -443,7 +483,12 @@ class AimPlannerNode final : public Node {
   }
 
   explicit AimPlannerNode(NodeInit& init)
-      : cfg_(init.config<AimPlannerConfig>()), guidance_(init.make_component<guidance::Guidance>("guidance")) {}
+      : cfg_(init.config<AimPlannerConfig>()), guidance_(init.make_component<guidance::Guidance>("guidance")) {
+    if (cfg_.patrol_min_length_m > 0.0)
+      patrol_.emplace(LinePatrolConfig{.window_s = cfg_.patrol_window_s,
+                                       .min_length_m = cfg_.patrol_min_length_m,
+                                       .max_residual_m = cfg_.patrol_max_residual_m});
+  }
 
   void process(Context& ctx) override {
     if (ctx.triggered_by(kOdometry)) {
@@ -489,6 +534,7 @@ class AimPlannerNode final : public Node {
                              [&](const Eigen::Vector3d& sighting) { return expected_near(t, sighting); });
       if (target) ++sighted_track_frames_;
     }
+    patrolling_ = false;
     if (target) {
       // The target is estimated again in the world frame, from what was seen of it there: its
       // velocity in the camera frame would include the hunter's own motion, and feeding that
@@ -531,6 +577,15 @@ class AimPlannerNode final : public Node {
                        guidance::AimGeometry{cfg_.aim_point_m, cfg_.camera_offset_m},
                        expected_acceleration(*hunter, aimed.waiting));
       if (cfg_.motion_axis_time_s > 0.0) stand_along_motion(x, dt);
+      if (patrol_) {
+        watch_patrol(t, intruder);
+        if (const auto lookout = patrol_pose(*hunter)) {
+          patrolling_ = true;
+          goal_ = lookout;
+          goal_velocity_.setZero();
+          ++patrol_frames_;
+        }
+      }
       goal_->position.z() = std::max(goal_->position.z(), cfg_.min_altitude_m);
       last_seen_ = t;
       last_target_ = x.head<3>();
@@ -565,6 +620,10 @@ class AimPlannerNode final : public Node {
       } else {
         reference_->steer(command.velocity, command.yaw, dt);
       }
+    } else if (const auto lookout = patrol_ && patrol_waiting(t) ? patrol_pose(*hunter) : std::nullopt) {
+      // Out of sight at the patrol's far end: it comes back to the end the hunter waits at.
+      ++patrol_frames_;
+      reference_->advance(*lookout, Eigen::Vector3d::Zero(), dt);
     } else if (goal_ && t - last_seen_ <= cfg_.target_timeout_s) {
       // A short loss: on towards the last aim pose, without feeding forward a velocity nobody sees.
       reference_->advance(*goal_, Eigen::Vector3d::Zero(), dt);
@@ -632,6 +691,10 @@ class AimPlannerNode final : public Node {
   PredictedShot predict_target_shot(const geometry::CameraPose& camera, const Eigen::Vector3d& hunter_velocity,
                                     const Eigen::VectorXd& x, double lead) const {
     using P = AimPlannerConfig::ShotPrediction;
+    if (patrolling_)  // braking to the end of its line, and turning there
+      return predict_shot(net_, camera, hunter_velocity, [&](double tau) {
+        return patrol_->line()->predict(x.head<3>(), x.segment<3>(3), lead + tau, cfg_.patrol_max_deceleration_m_s2);
+      });
     if (oscillation_)  // the oscillating axes as fitted, the others at constant velocity
       return predict_shot(net_, camera, hunter_velocity, [&](double tau) {
         return oscillation_->predict(lead + tau, x.head<3>() + x.segment<3>(3) * (lead + tau));
@@ -680,6 +743,7 @@ class AimPlannerNode final : public Node {
   // The share of the estimate's acceleration the shot's probability expects to go on while the net
   // flies, but on the axes an oscillation predicts: their prediction already turns.
   Eigen::Vector3d expected_shot_acceleration(const Eigen::VectorXd& x) const {
+    if (patrolling_) return Eigen::Vector3d::Zero();  // the patrol's prediction brakes already
     Eigen::Vector3d a = cfg_.shot_acceleration_share * x.segment<3>(6);
     if (oscillation_)
       for (int axis = 0; axis < 3; ++axis)
@@ -738,8 +802,11 @@ class AimPlannerNode final : public Node {
   bool worth_a_net(Context& ctx, std::optional<double> miss, std::optional<double> probability) const {
     const auto launcher = ctx.get(kLauncher);
     const bool last = launcher && launcher->nets_left == 1;
-    if (cfg_.fire_probability > 0.0)
-      return probability && *probability >= (last ? cfg_.last_net_probability : cfg_.fire_probability);
+    if (cfg_.fire_probability > 0.0) {
+      const double least = std::max(last ? cfg_.last_net_probability : cfg_.fire_probability,
+                                    patrolling_ ? cfg_.patrol_fire_probability : 0.0);
+      return probability && *probability >= least;
+    }
     return miss && *miss <= (last ? cfg_.last_net_radius_m : cfg_.capture_radius_m);
   }
 
@@ -761,6 +828,7 @@ class AimPlannerNode final : public Node {
                 .quantity("terminal_frames", terminal_frames_)
                 .quantity("search_frames", search_frames_)
                 .quantity("sighted_track_frames", sighted_track_frames_)
+                .quantity("patrol_frames", patrol_frames_)
                 .quantity("first_seen_range_m", first_seen_range_ ? nlohmann::json(*first_seen_range_) : nullptr, "m")
                 .markdown(fmt::format("Target in {} of {} frames; aim error (from the tracks) {} m RMS; {} shot(s), "
                                       "the first at {}; held {} time(s) after losing the target.\n",
@@ -815,6 +883,50 @@ class AimPlannerNode final : public Node {
     goal_->yaw = heading;
   }
 
+  // The patrol's sightings: those on its line, or, after kOffLine_s off it, a new line's.
+  void watch_patrol(double t, const Eigen::Vector3d& sighting) {
+    // Across the line, within 1 m; along it, within 3 m beyond an end where it turned: seen along
+    // the line from the end the hunter waits at, the far end is 10 m and more deep, its depth
+    // error metres.
+    constexpr double kOnLine_m = 1.0, kBeyondEnd_m = 3.0, kOffLine_s = 0.5;
+    const auto& line = patrol_->line();
+    if (line && line->distance(sighting, kBeyondEnd_m) > kOnLine_m) {
+      if (!off_line_since_) off_line_since_ = t;
+      if (t - *off_line_since_ < kOffLine_s) return;  // a stray sighting, or clutter
+      patrol_->reset();
+      patrol_end_.reset();
+    }
+    off_line_since_.reset();
+    patrol_->add(t, sighting);
+  }
+
+  // Whether a patrol, seen within patrol_timeout_s, is still waited for.
+  bool patrol_waiting(double t) const {
+    const auto last = patrol_->last_sighting_s();
+    return patrol_->line() && last && t - *last <= cfg_.patrol_timeout_s;
+  }
+
+  // The aim pose that waits beyond an end of the patrol where the target turned (the one chosen
+  // before, else the nearest), facing along the line, the end at x_E^d.
+  std::optional<AimPose> patrol_pose(const msg::VehicleState& hunter) {
+    const auto& line = patrol_->line();
+    if (!line) return std::nullopt;
+    if (!patrol_end_) {  // once chosen, the end stays: the turn seen there leaves the window in time
+      for (int end = 0; end < 2; ++end)
+        if (line->turned[static_cast<std::size_t>(end)] &&
+            (!patrol_end_ ||
+             (line->end(end) - hunter.position).norm() < (line->end(*patrol_end_) - hunter.position).norm()))
+          patrol_end_ = end;
+    }
+    // The lookout only sets the heading, along the line: the aim pose puts the end at x_E^d.
+    constexpr double kLookout_m = 3.0;
+    const Eigen::Vector3d end = line->end(*patrol_end_);
+    AimPose pose = aim_pose(end, patrol_lookout(*line, *patrol_end_, kLookout_m), reference_->yaw(), cfg_.aim_point_m,
+                            cfg_.camera_offset_m);
+    pose.position.z() = std::max(pose.position.z(), cfg_.min_altitude_m);
+    return pose;
+  }
+
   // Back off from where the target was last seen, along the line to the hunter, and face it: from
   // farther away the camera sees more, above and below as well as to the sides.
   AimPose back_off_pose(const msg::VehicleState& hunter) const {
@@ -843,6 +955,10 @@ class AimPlannerNode final : public Node {
   std::optional<AimPose> goal_;
   std::optional<TargetEstimate> estimate_;
   std::optional<OscillationPredictor> oscillation_;  // shot_prediction oscillation
+  std::optional<LinePatrol> patrol_;                 // patrol_min_length_m > 0
+  bool patrolling_ = false;                          // this frame's aim pose waits at the patrol's end
+  std::optional<int> patrol_end_;                    // the end waited at (PatrolLine::end)
+  std::optional<double> off_line_since_;             // s: sightings off the patrol's line since
   nlohmann::json shots_ = nlohmann::json::array();   // each shot: when, its predicted miss and probability
   std::uint64_t target_id_ = 0;
   Eigen::Vector3d goal_velocity_ = Eigen::Vector3d::Zero();
@@ -852,7 +968,7 @@ class AimPlannerNode final : public Node {
   double estimate_since_ = 0.0;  // s: when the current estimate started
   bool holding_ = false, armed_ = false;
   std::uint64_t frames_ = 0, target_frames_ = 0, fire_count_ = 0, holds_ = 0, ground_frames_ = 0, terminal_frames_ = 0,
-                sighted_track_frames_ = 0, search_frames_ = 0;
+                sighted_track_frames_ = 0, search_frames_ = 0, patrol_frames_ = 0;
   double squared_error_ = 0.0;
 };
 KESTREL_REGISTER_NODE(AimPlannerNode)

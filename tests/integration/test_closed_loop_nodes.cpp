@@ -181,6 +181,32 @@ TEST(ClosedLoop, AFleeingIntruderIsFollowedThroughTheTracksThePitchingCameraBrea
   EXPECT_TRUE(sighted.report.at("control").at("time_to_align_s").is_number());
 }
 
+// A line flown back and forth at 7.4 m/s, braking to turn at its ends, 11 m long (an engagement
+// of the capture benchmark's 6-10 m/s band): chased across at its cruise, it pitches the hunter
+// out of sight and is lost; waited for beyond the end where it turned (aim.patrol_min_length_m,
+// 3 m in the graph), it comes straight at the net, braking, and is caught.
+TEST(ClosedLoop, AFastPatrolIsCaughtWaitingBeyondTheEndOfItsLine) {
+  const std::string graph = KESTREL_SOURCE_DIR "/graphs/sim_intercept_fast.yaml";
+  const std::vector<std::string> patrol = {"intruder.shape=line",
+                                           "intruder.line_start_m=[4.064, -5.161, 2.509]",
+                                           "intruder.line_end_m=[6.875, 5.750, 2.600]",
+                                           "intruder.speed_m_s=7.424",
+                                           "intruder.at_end=repeat",
+                                           "intruder.line_acceleration_m_s2=7.337",
+                                           "hunter.wind_m_s=[-0.725, -1.242, 0.0]",
+                                           "hunter.gust_std_m_s=0.288"};
+  std::vector<std::string> chasing = patrol;
+  chasing.push_back("aim.patrol_min_length_m=0");
+  const RunResult waited = run(graph, patrol, 200057), chased = run(graph, chasing, 200057);
+  ASSERT_EQ(waited.outcome, RunOutcome::completed) << (waited.errors.empty() ? "" : waited.errors.front());
+  ASSERT_EQ(chased.outcome, RunOutcome::completed) << (chased.errors.empty() ? "" : chased.errors.front());
+  EXPECT_EQ(chased.report.at("aim").at("patrol_frames"), 0);
+  EXPECT_EQ(chased.report.at("control").at("captured"), false);
+  EXPECT_GT(waited.report.at("aim").at("patrol_frames").get<int>(), 30);
+  EXPECT_EQ(waited.report.at("control").at("captured"), true);
+  EXPECT_EQ(waited.report.at("hunter").at("touchdowns"), 0);
+}
+
 // The loop with the detection-level camera: reproducible bit for bit too, and it flies the
 // random engagements of the capture benchmark (here a line that brakes at its ends, in wind).
 TEST(ClosedLoop, TheDetectionLevelLoopIsReproducibleBitForBit) {
