@@ -403,9 +403,8 @@ class AimPlannerNode final : public Node {
         .with_unit("m/s^2")
         .range(0.1, 100.0)
         .describe(
-            "patrol_min_length_m: the shot predicts the target braking into its turn as hard as its turns showed "
-            "(until "
-            "one is measured, evenly to rest at the end it flies towards, v^2 / 2d), at most this hard");
+            "patrol_min_length_m: the shot predicts the target braking into its turn as hard as its turns showed, at "
+            "most this hard");
     c.param("patrol_fire_probability", &C::patrol_fire_probability)
         .range(0.0, 1.0)
         .describe(

@@ -24,15 +24,8 @@ Eigen::Vector3d PatrolLine::predict(const Eigen::Vector3d& position, const Eigen
                                     double max_deceleration_m_s2) const {
   double s = (position - centre).dot(direction), v = velocity.dot(direction);
   const Eigen::Vector3d across = position - centre - s * direction;
-  if (tau <= 0.0) return position;
-  if (deceleration_m_s2 <= 0.0) {
-    // How it brakes is not yet known: evenly to rest at the end it flies towards.
-    if (std::abs(v) < 1e-6) return position;
-    const double sign = v > 0.0 ? 1.0 : -1.0;
-    const double to_end = std::max(0.05, half_length_m - sign * s);
-    const double deceleration = std::min(max_deceleration_m_s2, v * v / (2.0 * to_end));
-    return centre + (s + v * tau - sign * 0.5 * deceleration * tau * tau) * direction + across;
-  }
+  // A line is found only where a turn was seen, so its braking is known; none: no braking.
+  if (tau <= 0.0 || deceleration_m_s2 <= 0.0) return position + std::max(0.0, tau) * velocity;
   // The patrol's own motion, stepped: up to its cruise, braking in time to rest at the end it
   // flies towards, and back.
   const double a = std::min(deceleration_m_s2, max_deceleration_m_s2);
@@ -77,8 +70,6 @@ void LinePatrol::fit() {
       line->direction = -line->direction;
       std::swap(line->turned[0], line->turned[1]);
     }
-    // A turn that has left the window still tells how the patrol brakes.
-    if (line->deceleration_m_s2 <= 0.0) line->deceleration_m_s2 = line_->deceleration_m_s2;
     line->cruise_speed_m_s = std::max(line->cruise_speed_m_s, line_->cruise_speed_m_s);
   }
   // A line once found stays until reset(): the far end's sightings, seen from the near one, are

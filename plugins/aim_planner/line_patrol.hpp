@@ -27,7 +27,7 @@ struct PatrolLine {
   double half_length_m = 0.0;
   double rms_residual_m = 0.0;
   std::array<bool, 2> turned{};    ///< a turn seen at the end towards -direction [0], +direction [1]
-  double deceleration_m_s2 = 0.0;  ///< how hard it brakes into its turns (0: not yet measured)
+  double deceleration_m_s2 = 0.0;  ///< how hard it brakes into its turns (the median of those seen)
   double cruise_speed_m_s = 0.0;   ///< its speed along the line between the turns
   Eigen::Vector3d end(int index) const { return centre + (index == 0 ? -half_length_m : half_length_m) * direction; }
   /// The distance of a point from the line (infinite beyond an end where it turned by more than
@@ -35,8 +35,7 @@ struct PatrolLine {
   double distance(const Eigen::Vector3d& p, double slack_m) const;
   /// Where a target at `position` with `velocity` is `tau` seconds on: along the line it speeds up
   /// to its cruise, brakes as its turns showed (at most `max_deceleration_m_s2`) to rest at the end
-  /// it flies towards, and turns back, as a patrol does (its braking not yet measured: evenly to
-  /// rest at that end); across the line it keeps its offset.
+  /// it flies towards, and turns back, as a patrol does; across the line it keeps its offset.
   Eigen::Vector3d predict(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity, double tau,
                           double max_deceleration_m_s2) const;
 };
