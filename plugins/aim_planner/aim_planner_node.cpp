@@ -26,6 +26,7 @@
 #include <optional>
 
 #include "fire_decision.hpp"
+#include "flee_watch.hpp"
 #include "line_patrol.hpp"
 #include "lost_search.hpp"
 #include "motion_axis.hpp"
@@ -102,6 +103,14 @@ struct AimPlannerConfig {
   double patrol_timeout_s = 6.0;
   double patrol_max_deceleration_m_s2 = 10.0;
   double patrol_fire_probability = 0.8;
+  double flee_min_speed_m_s = 0.0;  // 0: never treat the target as an evader
+  double flee_min_share = 0.7;
+  double flee_max_range_m = 8.0;
+  double flee_time_s = 0.25;
+  double flee_min_closing_m_s = 1.0;
+  Eigen::Vector3d flee_aim_point_m{0.0, 1.6, 3.2};
+  double flee_search_after_s = 1.5;
+  double flee_forget_s = 10.0;
   AimTilt aim_tilt = AimTilt::level;
   double aim_tilt_share = 1.0;
   double aim_tilt_time_s = 0.5;
@@ -410,6 +419,49 @@ class AimPlannerNode final : public Node {
         .describe(
             "patrol_min_length_m, with fire_probability: the probability a shot waits for while the hunter waits at "
             "the patrol's end (the target comes back every turn: a marginal shot is not worth a net)");
+    c.param("flee_min_speed_m_s", &C::flee_min_speed_m_s)
+        .with_unit("m/s")
+        .range(0.0, 100.0)
+        .describe(
+            "a target that moves away from the hunter along the line of sight at least this fast (and at least "
+            "flee_min_share of its speed) while the hunter closes on it (flee_min_closing_m_s), within "
+            "flee_max_range_m, for flee_time_s, flees it: an evader, which breaks "
+            "across the line of sight when the hunter closes in. It is held at flee_aim_point_m instead of "
+            "aim_point_m, every sighting of it is followed (as follow_sighted_track), and once lost it is looked for "
+            "after flee_search_after_s; 0: no target is an evader (the paper's)");
+    c.param("flee_min_share", &C::flee_min_share)
+        .range(0.0, 1.0)
+        .describe("flee_min_speed_m_s: the least share of the target's speed directed away from the hunter");
+    c.param("flee_max_range_m", &C::flee_max_range_m)
+        .with_unit("m")
+        .range(0.0, 1000.0)
+        .describe("flee_min_speed_m_s: farther from the hunter, a target moving away is not fleeing it");
+    c.param("flee_min_closing_m_s", &C::flee_min_closing_m_s)
+        .with_unit("m/s")
+        .range(0.0, 100.0)
+        .describe("flee_min_speed_m_s: the hunter closes on the target at least this fast (it flees the hunter)");
+    c.param("flee_time_s", &C::flee_time_s)
+        .with_unit("s")
+        .range(0.0, 60.0)
+        .describe("flee_min_speed_m_s: how long it flees without a break before it is an evader");
+    c.param("flee_aim_point_m", &C::flee_aim_point_m)
+        .with_unit("m")
+        .range(-50.0, 50.0)
+        .describe(
+            "flee_min_speed_m_s: x_E^d for an evader (camera frame): on the net's line, beyond where it opens, so "
+            "that the evader only flees and the net, flying on while open, sweeps on to it");
+    c.param("flee_search_after_s", &C::flee_search_after_s)
+        .with_unit("s")
+        .range(-1.0, 1000.0)
+        .describe(
+            "flee_min_speed_m_s: an evader lost, when_lost back_off turns to search this long after the back-off "
+            "begins (it broke past the hunter, or fled behind it); < 0: as back_off_search_after_s");
+    c.param("flee_forget_s", &C::flee_forget_s)
+        .with_unit("s")
+        .range(0.0, 3600.0)
+        .describe(
+            "flee_min_speed_m_s: the target stays an evader through its estimate's restarts, until nothing has been "
+            "seen for this long");
     c.choice("aim_tilt", &C::aim_tilt,
              {{"level", C::AimTilt::level}, {"target", C::AimTilt::target}, {"hunter", C::AimTilt::hunter}})
         .describe(
@@ -523,12 +575,15 @@ class AimPlannerNode final : public Node {
     std::optional<double> miss, probability, spread;
     std::optional<PredictedShot> shot;
     std::optional<ShotUncertainty> uncertainty;
+    // An evader stays one through its estimate's restarts (it breaks out of view, and is found again
+    // by the search), until nothing has been seen for flee_forget_s.
+    if (flee_.fleeing() && t - last_seen_ > cfg_.flee_forget_s) flee_.reset();
     if (estimate_ && t - last_seen_ > cfg_.target_timeout_s) {  // too old to predict from
       estimate_.reset();
       oscillation_.reset();
     }
     if (estimate_) estimate_->predict(dt);
-    if (!target && estimate_ && cfg_.follow_sighted_track) {
+    if (!target && estimate_ && (cfg_.follow_sighted_track || evader())) {
       target = sighted_track(*tracks, camera, cfg_.min_target_height_m, estimate_->state().head<3>(),
                              [&](const Eigen::Vector3d& sighting) { return expected_near(t, sighting); });
       if (target) ++sighted_track_frames_;
@@ -563,6 +618,11 @@ class AimPlannerNode final : public Node {
       }
       if (oscillation_) oscillation_->add(t, intruder);
       const Eigen::VectorXd x = estimate_->state();
+      // A patrol flies its own line, away from the hunter waiting at its end as often as towards it.
+      if (cfg_.flee_min_speed_m_s > 0.0 && !patrol_found()) {
+        flee_.update(dt, x.head<3>(), x.segment<3>(3), hunter->position, hunter->velocity);
+        if (evader()) ++flee_frames_;
+      }
       const double smoothing = cfg_.aim_tilt_time_s > 0.0 ? dt / (cfg_.aim_tilt_time_s + dt) : 1.0;
       tilt_acceleration_ += smoothing * (Eigen::Vector3d(x.segment<3>(6)) - tilt_acceleration_);
       // aim_at swing_centre: wait at the centre of a wide swing for the target to come through.
@@ -573,7 +633,7 @@ class AimPlannerNode final : public Node {
                                  : SwingAim{x.head<3>(), x.segment<3>(3), {}};
       goal_velocity_ = aimed.velocity;
       goal_ = aim_pose(aimed.position, hunter->position, geometry::yaw_of(hunter->orientation),
-                       guidance::AimGeometry{cfg_.aim_point_m, cfg_.camera_offset_m},
+                       guidance::AimGeometry{aim_point(), cfg_.camera_offset_m},
                        expected_acceleration(*hunter, aimed.waiting));
       if (cfg_.motion_axis_time_s > 0.0) stand_along_motion(x, dt);
       if (patrol_) {
@@ -589,7 +649,7 @@ class AimPlannerNode final : public Node {
       last_seen_ = t;
       last_target_ = x.head<3>();
       last_target_velocity_ = x.segment<3>(3);
-      error = cfg_.aim_point_m - in_camera;
+      error = aim_point() - in_camera;
       ++target_frames_;
       squared_error_ += error->squaredNorm();
       // The net leaves when the order reaches the launcher, not at the capture the tracks come
@@ -636,8 +696,8 @@ class AimPlannerNode final : public Node {
       holding_ = true;
       using L = AimPlannerConfig::WhenLost;
       const bool searching =
-          cfg_.when_lost == L::search || (cfg_.when_lost == L::back_off && cfg_.back_off_search_after_s >= 0.0 &&
-                                          t - last_seen_ >= cfg_.target_timeout_s + cfg_.back_off_search_after_s);
+          cfg_.when_lost == L::search || (cfg_.when_lost == L::back_off && search_after_s() >= 0.0 &&
+                                          t - last_seen_ >= cfg_.target_timeout_s + search_after_s());
       if (searching) {
         ++search_frames_;
         reference_->hold(dt, search_turn_ * cfg_.search_yaw_rate_deg_s * M_PI / 180.0);
@@ -788,6 +848,18 @@ class AimPlannerNode final : public Node {
     return vehicle::tilt_limited_acceleration(acceleration, max_tilt_rad(), guidance::kGravity_m_s2);
   }
 
+  bool patrol_found() const { return patrol_ && patrol_->line(); }
+  // Whether the target is an evader: seen fleeing the hunter, and flying no patrol.
+  bool evader() const { return flee_.fleeing() && !patrol_found(); }
+
+  // x_E^d: farther for an evader (flee_aim_point_m), outside the radius where it breaks.
+  const Eigen::Vector3d& aim_point() const { return evader() ? cfg_.flee_aim_point_m : cfg_.aim_point_m; }
+
+  // When the back-off turns to search: sooner for an evader, which broke past or fled behind.
+  double search_after_s() const {
+    return evader() && cfg_.flee_search_after_s >= 0.0 ? cfg_.flee_search_after_s : cfg_.back_off_search_after_s;
+  }
+
   double max_tilt_rad() const { return cfg_.max_tilt_deg * std::numbers::pi / 180.0; }
 
   // The launcher (when connected) fires only when loaded and not reloading.
@@ -828,6 +900,7 @@ class AimPlannerNode final : public Node {
                 .quantity("search_frames", search_frames_)
                 .quantity("sighted_track_frames", sighted_track_frames_)
                 .quantity("patrol_frames", patrol_frames_)
+                .quantity("flee_frames", flee_frames_)
                 .quantity("first_seen_range_m", first_seen_range_ ? nlohmann::json(*first_seen_range_) : nullptr, "m")
                 .markdown(fmt::format("Target in {} of {} frames; aim error (from the tracks) {} m RMS; {} shot(s), "
                                       "the first at {}; held {} time(s) after losing the target.\n",
@@ -861,7 +934,7 @@ class AimPlannerNode final : public Node {
     e.target.acceleration = x.segment<3>(6);
     e.target.position_covariance = estimate_->covariance().topLeftCorner<3, 3>();
     e.aim = *goal_;
-    e.geometry = {cfg_.aim_point_m, cfg_.camera_offset_m};
+    e.geometry = {aim_point(), cfg_.camera_offset_m};
     e.limits = {cfg_.max_speed_m_s, cfg_.max_acceleration_m_s2};
     e.min_altitude = cfg_.min_altitude_m;
     return e;
@@ -878,7 +951,7 @@ class AimPlannerNode final : public Node {
     Eigen::Vector3d from = x.head<3>();  // a point behind the target along that direction
     from.head<2>() -= 3.0 * along;
     const double heading = goal_->yaw;
-    goal_ = aim_pose(x.head<3>(), from, std::atan2(along.y(), along.x()), cfg_.aim_point_m, cfg_.camera_offset_m);
+    goal_ = aim_pose(x.head<3>(), from, std::atan2(along.y(), along.x()), aim_point(), cfg_.camera_offset_m);
     goal_->yaw = heading;
   }
 
@@ -920,7 +993,7 @@ class AimPlannerNode final : public Node {
     // The lookout only sets the heading, along the line: the aim pose puts the end at x_E^d.
     constexpr double kLookout_m = 3.0;
     const Eigen::Vector3d end = line->end(*patrol_end_);
-    AimPose pose = aim_pose(end, patrol_lookout(*line, *patrol_end_, kLookout_m), reference_->yaw(), cfg_.aim_point_m,
+    AimPose pose = aim_pose(end, patrol_lookout(*line, *patrol_end_, kLookout_m), reference_->yaw(), aim_point(),
                             cfg_.camera_offset_m);
     pose.position.z() = std::max(pose.position.z(), cfg_.min_altitude_m);
     return pose;
@@ -945,6 +1018,8 @@ class AimPlannerNode final : public Node {
   std::optional<AimReference> reference_;
   FireTrigger fire_{cfg_.capture_radius_m, cfg_.dwell_s, cfg_.cooldown_s};
   MotionAxis motion_axis_{cfg_.motion_axis_time_s};
+  FleeWatch flee_{{cfg_.flee_min_speed_m_s, cfg_.flee_min_share, cfg_.flee_max_range_m, cfg_.flee_min_closing_m_s,
+                   cfg_.flee_time_s}};
   net::NetModel net_{{cfg_.net_open_point_m, cfg_.net_flight_time_s, cfg_.capture_radius_m, cfg_.net_open_s}};
   AimPose takeoff_, search_, standoff_;
   Eigen::Vector3d last_target_ = Eigen::Vector3d::Zero();
@@ -967,7 +1042,7 @@ class AimPlannerNode final : public Node {
   double estimate_since_ = 0.0;  // s: when the current estimate started
   bool holding_ = false, armed_ = false;
   std::uint64_t frames_ = 0, target_frames_ = 0, fire_count_ = 0, holds_ = 0, ground_frames_ = 0, terminal_frames_ = 0,
-                sighted_track_frames_ = 0, search_frames_ = 0, patrol_frames_ = 0;
+                sighted_track_frames_ = 0, search_frames_ = 0, patrol_frames_ = 0, flee_frames_ = 0;
   double squared_error_ = 0.0;
 };
 KESTREL_REGISTER_NODE(AimPlannerNode)
