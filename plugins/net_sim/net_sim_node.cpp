@@ -117,6 +117,7 @@ class NetSimNode final : public Node {
       fire_times_.push_back(t);
       closest_.push_back(std::numeric_limits<double>::infinity());
       closest_straight_.push_back(closest_if_straight(shot));
+      launch_geometry_.push_back(launch_geometry(launcher.position_world, hunter->velocity));
       if (!first_fire_) first_fire_ = t;
       publish_launcher(ctx, ctx.now());
       return;
@@ -216,6 +217,15 @@ class NetSimNode final : public Node {
   // How near the open net would have come to the intruder had it flown on at its true velocity at
   // the shot: a miss that this would have caught was lost to the intruder's manoeuvre while the
   // net flew, not to the aim (stops at the first catch, as the net does; inf: nothing seen yet).
+  // At the launch, the intruder's distance from the launcher and how fast the two close (along the
+  // line of sight): where a miss was fired from. NaN before the intruder is first seen.
+  std::pair<double, double> launch_geometry(const Eigen::Vector3d& launcher, const Eigen::Vector3d& velocity) const {
+    if (!previous_) return {std::nan(""), std::nan("")};
+    const Eigen::Vector3d line = previous_->second - launcher;
+    const double range = line.norm();
+    return {range, range > 0.0 ? (velocity - previous_velocity_).dot(line) / range : 0.0};
+  }
+
   double closest_if_straight(const NetShot& shot) const {
     double closest = std::numeric_limits<double>::infinity();
     if (!previous_) return closest;
@@ -235,7 +245,9 @@ class NetSimNode final : public Node {
     for (std::size_t i = 0; i < fire_times_.size(); ++i)
       shots.push_back({{"t_s", fire_times_[i]},
                        {"closest_m", finite(closest_[i])},
-                       {"closest_straight_m", finite(closest_straight_[i])}});
+                       {"closest_straight_m", finite(closest_straight_[i])},
+                       {"range_m", finite(launch_geometry_[i].first)},
+                       {"closing_m_s", finite(launch_geometry_[i].second)}});
     return shots;
   }
 
@@ -288,6 +300,7 @@ class NetSimNode final : public Node {
   NetModel model_;
   std::vector<std::pair<NetShot, std::size_t>> shots_;           ///< in flight, with their index in fire_times_
   std::vector<double> closest_;                                  ///< per shot: nearest approach while open
+  std::vector<std::pair<double, double>> launch_geometry_;       ///< per shot: range (m), closing (m/s)
   std::vector<double> closest_straight_;                         ///< per shot: the same, the intruder flying straight
   Eigen::Vector3d previous_velocity_ = Eigen::Vector3d::Zero();  ///< the intruder's at its last sample
   std::optional<std::pair<double, Eigen::Vector3d>> previous_;   ///< the intruder's last sample

@@ -280,11 +280,14 @@ namespace {
 
 // A launcher on the hunter at rest, the intruder flying its figure-8 out of the net's reach, and
 // two fire orders, at 0.5 s and at `second_s`; `net_params` is net_sim's params as YAML.
-RunResult fire_two_orders(const std::string& net_params, double second_s) {
+RunResult fire_two_orders(const std::string& net_params, double second_s,
+                          const std::string& intruder_params = "{shape: figure8, rate_hz: 30}") {
   EXPECT_TRUE(kestrel::testing::built_plugins().load(KESTREL_TEST_PLUGIN_DIR "/kestrel_test_nodes.so"));
   const std::string yaml =
       "kestrel: 1\nname: launcher\nexecutor: {type: lockstep}\nduration: 2.0\nnodes:\n"
-      "  - {id: intruder, type: intruder, params: {shape: figure8, rate_hz: 30}}\n"
+      "  - {id: intruder, type: intruder, params: " +
+      intruder_params +
+      "}\n"
       "  - {id: hunter, type: quadrotor_sim}\n"
       "  - {id: orders, type: fire_orders, params: {first_s: 0.5, second_s: " +
       std::to_string(second_s) +
@@ -317,6 +320,23 @@ TEST(NetSim, ALauncherFiresOnlyTheNetsItCarriesAndWaitsForItsReload) {
     EXPECT_EQ(control.at("fire_count"), 2);
     EXPECT_EQ(control.at("shots").size(), static_cast<std::size_t>(c.used));
   }
+}
+
+// Where each shot was fired from: an intruder recorded crossing at 1 m/s (y), 6 m ahead of the
+// launcher and 2 m up; the hunter rests on the ground, its launcher at (0.1, 0, 0). At the first
+// order (0.5 s) the intruder is at (6, -0.5, 2): 6.25 m away, closing at 0.5 / 6.25 m/s (it
+// comes towards the line of sight's foot); at the second (1 s), at (6, 0, 2), crossing it.
+TEST(NetSim, EachShotLogsTheRangeAndTheClosingSpeedAtItsLaunch) {
+  const std::filesystem::path csv = kestrel::testing::scratch_path("kestrel-crossing.csv");
+  std::ofstream(csv) << "0,6,-1,2\n2,6,1,2\n";
+  const RunResult r = fire_two_orders("{}", 1.0, "{shape: file, file: " + csv.string() + ", rate_hz: 30}");
+  ASSERT_EQ(r.outcome, RunOutcome::completed) << (r.errors.empty() ? "" : r.errors.front());
+  const auto& shots = r.report.at("control").at("shots");
+  ASSERT_EQ(shots.size(), 2u);
+  EXPECT_NEAR(shots[0].at("range_m").get<double>(), std::hypot(5.9, 0.5, 2.0), 0.05);
+  EXPECT_NEAR(shots[0].at("closing_m_s").get<double>(), 0.5 / std::hypot(5.9, 0.5, 2.0), 0.02);
+  EXPECT_NEAR(shots[1].at("range_m").get<double>(), std::hypot(5.9, 2.0), 0.05);
+  EXPECT_NEAR(shots[1].at("closing_m_s").get<double>(), 0.0, 0.02);
 }
 
 // end_after_decided_s: once the net has caught the intruder, or the last net has flown without
