@@ -214,9 +214,6 @@ class NetSimNode final : public Node {
                                             from_seconds(std::max(ready_at_, 0.0))});
   }
 
-  // How near the open net would have come to the intruder had it flown on at its true velocity at
-  // the shot: a miss that this would have caught was lost to the intruder's manoeuvre while the
-  // net flew, not to the aim (stops at the first catch, as the net does; inf: nothing seen yet).
   // At the launch, the intruder's distance from the launcher and how fast the two close (along the
   // line of sight): where a miss was fired from. NaN before the intruder is first seen.
   std::pair<double, double> launch_geometry(const Eigen::Vector3d& launcher, const Eigen::Vector3d& velocity) const {
@@ -226,6 +223,9 @@ class NetSimNode final : public Node {
     return {range, range > 0.0 ? (velocity - previous_velocity_).dot(line) / range : 0.0};
   }
 
+  // How near the open net would have come to the intruder had it flown on at its true velocity at
+  // the shot: a miss that this would have caught was lost to the intruder's manoeuvre while the
+  // net flew, not to the aim (stops at the first catch, as the net does; inf: nothing seen yet).
   double closest_if_straight(const NetShot& shot) const {
     double closest = std::numeric_limits<double>::infinity();
     if (!previous_) return closest;
@@ -300,8 +300,8 @@ class NetSimNode final : public Node {
   NetModel model_;
   std::vector<std::pair<NetShot, std::size_t>> shots_;           ///< in flight, with their index in fire_times_
   std::vector<double> closest_;                                  ///< per shot: nearest approach while open
-  std::vector<std::pair<double, double>> launch_geometry_;       ///< per shot: range (m), closing (m/s)
   std::vector<double> closest_straight_;                         ///< per shot: the same, the intruder flying straight
+  std::vector<std::pair<double, double>> launch_geometry_;       ///< per shot: range (m), closing (m/s)
   Eigen::Vector3d previous_velocity_ = Eigen::Vector3d::Zero();  ///< the intruder's at its last sample
   std::optional<std::pair<double, Eigen::Vector3d>> previous_;   ///< the intruder's last sample
   std::vector<double> fire_times_;
