@@ -3,9 +3,10 @@
 // hunter closes in, its velocity points away along the line of sight, at speed. A
 // target on its own path (a figure-8, a line, a random flight) moves across the line of sight as
 // often as along it, and one that flies away on its own does so whether or not the hunter comes
-// after it. Seen fleeing for a while, the target is an evader until the estimate starts
-// again: the aim then holds it farther away (outside the radius where it breaks across the line of
-// sight), follows its every sighting, and, once it is lost, turns to look for it where it fled.
+// after it. Seen fleeing for a while, the target is an evader until reset (the aim resets it once
+// nothing has been seen for flee_forget_s, not when its estimate restarts): the aim then holds it
+// farther away (outside the radius where it breaks across the line of sight), follows its every
+// sighting, and, once it is lost, turns to look for it where it fled.
 #include <Eigen/Core>
 
 namespace kestrel::aim {
