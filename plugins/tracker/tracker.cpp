@@ -34,6 +34,7 @@ struct TrackerConfig {
   ComponentConfig deleter;
   ComponentConfig selector;
   Eigen::Vector3d camera_offset_m{0.1, 0.0, 0.0};
+  bool track_in_world = true;
 };
 
 class Tracker final : public TrackerNode {
@@ -57,6 +58,10 @@ class Tracker final : public TrackerNode {
         .with_unit("m")
         .range(-10.0, 10.0)
         .describe("with pose connected: the camera's position in the body frame of the vehicle carrying it");
+    c.param("track_in_world", &TrackerConfig::track_in_world)
+        .describe(
+            "with pose connected: keep the tracks in the world (true) or in the detections' frame, as if pose were "
+            "unconnected (false: the paper's tracker, to compare the two on one graph with --set)");
     return with_ports(NodeSpec("tracker", "Multi-target tracker made of swappable components (paper, 2.3)"))
         .details(
             "Each frame: every track's filter predicts to the frame's time; the associator pairs tracks with "
@@ -83,11 +88,12 @@ class Tracker final : public TrackerNode {
       : TrackerNode(TrackerParts{init.make_component<Filter>("filter"), init.make_component<Associator>("associator"),
                                  init.make_component<Initiator>("initiator"), init.make_component<Deleter>("deleter"),
                                  init.make_component<Selector>("selector")}),
-        camera_offset_m_(init.config<TrackerConfig>().camera_offset_m) {}
+        camera_offset_m_(init.config<TrackerConfig>().camera_offset_m),
+        track_in_world_(init.config<TrackerConfig>().track_in_world) {}
 
   void process(Context& ctx) override {
     if (ctx.triggered_by(kPose)) {
-      poses_.add(*ctx.get(kPose));
+      if (track_in_world_) poses_.add(*ctx.get(kPose));
       return;
     }
     const auto pose = poses_.at(ctx.get(kDetections)->stamp);
@@ -108,6 +114,7 @@ class Tracker final : public TrackerNode {
 
  private:
   Eigen::Vector3d camera_offset_m_;
+  bool track_in_world_;
   vehicle::StateHistory poses_;
 };
 KESTREL_REGISTER_NODE(Tracker)

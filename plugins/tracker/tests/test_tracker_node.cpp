@@ -302,4 +302,13 @@ TEST(TrackerNode, GivenTheCamerasPoseATargetStaysStillWhileTheCameraPitches) {
   const auto& moving = camera.report.at("probe").at("tracks");
   ASSERT_FALSE(moving.empty());
   EXPECT_GT(velocity(moving.back()).norm(), 1.5);
+
+  // With the pose connected but track_in_world off, the tracks are the camera frame's, as unconnected.
+  const auto off = run(yaml(true), {"tracker.track_in_world=false"});
+  ASSERT_EQ(off.outcome, RunOutcome::completed) << (off.errors.empty() ? "" : off.errors.front());
+  const auto& unmoved = off.report.at("probe").at("tracks");
+  ASSERT_EQ(unmoved.size(), moving.size());
+  EXPECT_EQ(off.report.at("tracker").at("tracks_started"), camera.report.at("tracker").at("tracks_started"));
+  EXPECT_EQ(position(unmoved.back()), position(moving.back()));
+  EXPECT_EQ(velocity(unmoved.back()), velocity(moving.back()));
 }
