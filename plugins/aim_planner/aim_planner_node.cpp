@@ -111,6 +111,9 @@ struct AimPlannerConfig {
   Eigen::Vector3d flee_aim_point_m{0.0, 1.6, 3.2};
   double flee_search_after_s = 1.5;
   double flee_forget_s = 10.0;
+  double flee_fire_probability = 0.0;
+  double flee_calm_speed_m_s = 0.0;
+  double flee_calm_time_s = 1.5;
   AimTilt aim_tilt = AimTilt::level;
   double aim_tilt_share = 1.0;
   double aim_tilt_time_s = 0.5;
@@ -119,6 +122,7 @@ struct AimPlannerConfig {
   double net_open_s = 0.3;
   double cooldown_s = 3.0;
   ComponentConfig guidance;
+  ComponentConfig evader_guidance;
 };
 
 class AimPlannerNode final : public Node {
@@ -456,6 +460,22 @@ class AimPlannerNode final : public Node {
         .describe(
             "flee_min_speed_m_s: an evader lost, when_lost back_off turns to search this long after the back-off "
             "begins (it broke past the hunter, or fled behind it); < 0: as back_off_search_after_s");
+    c.param("flee_fire_probability", &C::flee_fire_probability)
+        .range(0.0, 1.0)
+        .describe(
+            "flee_min_speed_m_s: the least probability to fire at an evader (with fire_probability set), every net "
+            "alike; 0: as any target. A run-in's chance keeps rising as it closes: waiting for a better one is cheap");
+    c.param("flee_calm_speed_m_s", &C::flee_calm_speed_m_s)
+        .with_unit("m/s")
+        .range(0.0, 100.0)
+        .describe(
+            "flee_min_speed_m_s: an evader calms once the hunter is farther than flee_max_range_m; one faster than "
+            "this for flee_calm_time_s (more than it is slower) flies its own path, and is no evader for the rest of "
+            "the engagement (a figure-8 swinging along the line of sight can pass for one); 0: never checked");
+    c.param("flee_calm_time_s", &C::flee_calm_time_s)
+        .with_unit("s")
+        .range(0.0, 100.0)
+        .describe("flee_calm_speed_m_s: how long");
     c.param("flee_forget_s", &C::flee_forget_s)
         .with_unit("s")
         .range(0.0, 3600.0)
@@ -488,7 +508,12 @@ class AimPlannerNode final : public Node {
     c.component("guidance", &C::guidance, "guidance", "hold_aim")
         .describe(
             "how the hunter closes on the target before the terminal phase aligns the net: hold_aim (the paper's: "
-            "terminal from the start), pursuit, pn, frpn, predictive");
+            "terminal from the start), pursuit, pn, frpn, predictive, run_in");
+    c.component("evader_guidance", &C::evader_guidance, "guidance", "hold_aim")
+        .describe(
+            "flee_min_speed_m_s: the law for a target seen fleeing the hunter (an evader) instead of guidance: "
+            "hold_aim (terminal from the start, at flee_aim_point_m), or run_in (stalk it outside the radius where "
+            "it flees, then a pass at speed)");
     c.rule("oscillation_min_omega_rad_s < oscillation_max_omega_rad_s",
            {"oscillation_min_omega_rad_s", "oscillation_max_omega_rad_s"},
            [](const C& k) { return k.oscillation_min_omega_rad_s < k.oscillation_max_omega_rad_s; });
@@ -534,7 +559,9 @@ class AimPlannerNode final : public Node {
   }
 
   explicit AimPlannerNode(NodeInit& init)
-      : cfg_(init.config<AimPlannerConfig>()), guidance_(init.make_component<guidance::Guidance>("guidance")) {
+      : cfg_(init.config<AimPlannerConfig>()),
+        guidance_(init.make_component<guidance::Guidance>("guidance")),
+        evader_guidance_(init.make_component<guidance::Guidance>("evader_guidance")) {
     if (cfg_.patrol_min_length_m > 0.0)
       patrol_.emplace(LinePatrolConfig{.window_s = cfg_.patrol_window_s,
                                        .min_length_m = cfg_.patrol_min_length_m,
@@ -577,7 +604,7 @@ class AimPlannerNode final : public Node {
     std::optional<ShotUncertainty> uncertainty;
     // An evader stays one through its estimate's restarts (it breaks out of view, and is found again
     // by the search), until nothing has been seen for flee_forget_s.
-    if (flee_.fleeing() && t - last_seen_ > cfg_.flee_forget_s) flee_.reset();
+    if ((flee_.fleeing() || flee_.own_path()) && t - last_seen_ > cfg_.flee_forget_s) flee_.reset();
     if (estimate_ && t - last_seen_ > cfg_.target_timeout_s) {  // too old to predict from
       estimate_.reset();
       oscillation_.reset();
@@ -611,6 +638,7 @@ class AimPlannerNode final : public Node {
                                                  cfg_.oscillation_max_omega_rad_s, cfg_.oscillation_min_improvement});
         estimate_since_ = t;
         guidance_->reset();
+        evader_guidance_->reset();
         motion_axis_.reset();
         tilt_acceleration_.setZero();
       } else {
@@ -672,7 +700,11 @@ class AimPlannerNode final : public Node {
     }
 
     if (goal_ && target) {
-      const guidance::GuidanceCommand command = guidance_->command(engagement(dt));
+      // An evader is flown by its own law, from the frame it is recognised as one.
+      if (evader() && !flown_as_evader_) evader_guidance_->reset();
+      flown_as_evader_ = evader();
+      guidance::Guidance& law = evader() ? *evader_guidance_ : *guidance_;
+      const guidance::GuidanceCommand command = law.command(engagement(dt));
       if (command.terminal) {
         ++terminal_frames_;
         reference_->advance(*goal_, goal_velocity_, dt);
@@ -874,8 +906,10 @@ class AimPlannerNode final : public Node {
     const auto launcher = ctx.get(kLauncher);
     const bool last = launcher && launcher->nets_left == 1;
     if (cfg_.fire_probability > 0.0) {
-      const double least = std::max(last ? cfg_.last_net_probability : cfg_.fire_probability,
-                                    patrolling_ ? cfg_.patrol_fire_probability : 0.0);
+      const double least = evader() && cfg_.flee_fire_probability > 0.0
+                               ? cfg_.flee_fire_probability
+                               : std::max(last ? cfg_.last_net_probability : cfg_.fire_probability,
+                                          patrolling_ ? cfg_.patrol_fire_probability : 0.0);
       return probability && *probability >= least;
     }
     return miss && *miss <= (last ? cfg_.last_net_radius_m : cfg_.capture_radius_m);
@@ -1014,12 +1048,13 @@ class AimPlannerNode final : public Node {
 
   AimPlannerConfig cfg_;
   vehicle::StateHistory hunter_states_;
-  std::shared_ptr<guidance::Guidance> guidance_;
+  std::shared_ptr<guidance::Guidance> guidance_, evader_guidance_;
+  bool flown_as_evader_ = false;  // whether the last command came from evader_guidance
   std::optional<AimReference> reference_;
   FireTrigger fire_{cfg_.capture_radius_m, cfg_.dwell_s, cfg_.cooldown_s};
   MotionAxis motion_axis_{cfg_.motion_axis_time_s};
   FleeWatch flee_{{cfg_.flee_min_speed_m_s, cfg_.flee_min_share, cfg_.flee_max_range_m, cfg_.flee_min_closing_m_s,
-                   cfg_.flee_time_s}};
+                   cfg_.flee_time_s, cfg_.flee_calm_speed_m_s, cfg_.flee_calm_time_s}};
   net::NetModel net_{{cfg_.net_open_point_m, cfg_.net_flight_time_s, cfg_.capture_radius_m, cfg_.net_open_s}};
   AimPose takeoff_, search_, standoff_;
   Eigen::Vector3d last_target_ = Eigen::Vector3d::Zero();

@@ -6,7 +6,9 @@
 // after it. Seen fleeing for a while, the target is an evader until reset (the aim resets it once
 // nothing has been seen for flee_forget_s, not when its estimate restarts): the aim then holds it
 // farther away (outside the radius where it breaks across the line of sight), follows its every
-// sighting, and, once it is lost, turns to look for it where it fled.
+// sighting, and, once it is lost, turns to look for it where it fled. An evader calms once the
+// hunter is far; a target that keeps its speed with the hunter far (calm_speed_m_s) flies its own
+// path, fast, and is no evader for the rest of the engagement, whatever it did before.
 #include <Eigen/Core>
 
 namespace kestrel::aim {
@@ -17,6 +19,8 @@ struct FleeWatchConfig {
   double max_range_m = 8.0;      ///< farther from the hunter, a target moving away is not fleeing it
   double min_closing_m_s = 1.0;  ///< the hunter closes on it at least this fast: it flees the hunter
   double time_s = 0.25;          ///< how long it flees without a break before it is an evader
+  double calm_speed_m_s = 0.0;   ///< an evader slower than this with the hunter beyond max_range_m; 0: never checked
+  double calm_time_s = 1.5;      ///< faster than calm_speed_m_s this long more than slower: no evader
 };
 
 class FleeWatch {
@@ -31,12 +35,15 @@ class FleeWatch {
   bool fleeing() const { return evader_; }
   /// How long it has fled without a break, s.
   double fleeing_for_s() const { return fleeing_for_s_; }
+  /// Whether it was seen keeping its speed with the hunter far: no evader until reset.
+  bool own_path() const { return own_path_; }
   void reset();
 
  private:
   FleeWatchConfig cfg_;
   double fleeing_for_s_ = 0.0;
-  bool evader_ = false;
+  double restless_s_ = 0.0;  // time faster than calm_speed_m_s, less the time slower, with the hunter far
+  bool evader_ = false, own_path_ = false;
 };
 
 }  // namespace kestrel::aim

@@ -4,6 +4,7 @@
 #include <kestrel/guidance/predictive.hpp>
 #include <kestrel/guidance/proportional_navigation.hpp>
 #include <kestrel/guidance/pursuit.hpp>
+#include <kestrel/guidance/run_in.hpp>
 #include <kestrel/plugin.hpp>
 
 KESTREL_REGISTER_COMPONENT(kestrel::guidance::Guidance, kestrel::guidance::HoldAim)
@@ -11,3 +12,4 @@ KESTREL_REGISTER_COMPONENT(kestrel::guidance::Guidance, kestrel::guidance::Pursu
 KESTREL_REGISTER_COMPONENT(kestrel::guidance::Guidance, kestrel::guidance::ProportionalNavigation)
 KESTREL_REGISTER_COMPONENT(kestrel::guidance::Guidance, kestrel::guidance::FastResponsePn)
 KESTREL_REGISTER_COMPONENT(kestrel::guidance::Guidance, kestrel::guidance::Predictive)
+KESTREL_REGISTER_COMPONENT(kestrel::guidance::Guidance, kestrel::guidance::RunIn)

@@ -118,3 +118,49 @@ TEST(FleeWatch, TheTimeAndTheThresholdsAreParameters) {
   fly(watch, f, 0.2);
   EXPECT_TRUE(watch.fleeing());
 }
+
+// An evader calms once the hunter is far; a figure-8 swinging away along the line of sight passed
+// for one, but keeps its speed with the hunter far: it flies its own path, and is no evader again.
+TEST(FleeWatch, ATargetThatKeepsItsSpeedWithTheHunterFarIsNoEvader) {
+  FleeWatchConfig config;
+  config.calm_speed_m_s = 3.0;
+  config.calm_time_s = 1.5;
+  // Seen fleeing, then the hunter stops beyond max_range_m and the target flies at `velocity`.
+  const auto fled_then_far = [&](FleeWatch& watch, const Eigen::Vector3d& velocity) {
+    Flight f;
+    fly(watch, f, 0.3);
+    EXPECT_TRUE(watch.fleeing());
+    f.hunter = f.target - Eigen::Vector3d(config.max_range_m + 4.0, 0.0, 0.0);
+    f.hunter_velocity.setZero();
+    f.target_velocity = velocity;
+    return f;
+  };
+  {  // cruising at 2 m/s: an evader still
+    FleeWatch watch(config);
+    Flight f = fled_then_far(watch, {0.0, 2.0, 0.0});
+    fly(watch, f, 5.0);
+    EXPECT_TRUE(watch.fleeing());
+    EXPECT_FALSE(watch.own_path());
+  }
+  {  // at 6 m/s, across: no evader after calm_time_s, and not again when it flees
+    FleeWatch watch(config);
+    Flight f = fled_then_far(watch, {0.0, 6.0, 0.0});
+    fly(watch, f, 1.4);
+    EXPECT_TRUE(watch.fleeing());
+    fly(watch, f, 0.2);
+    EXPECT_FALSE(watch.fleeing());
+    EXPECT_TRUE(watch.own_path());
+    Flight again;
+    fly(watch, again, 1.0);
+    EXPECT_FALSE(watch.fleeing());
+    watch.reset();
+    EXPECT_FALSE(watch.own_path());
+  }
+  {  // fast while the hunter is near: not judged (it flees), whatever its speed
+    FleeWatch watch(config);
+    Flight f = fled_then_far(watch, {0.0, 6.0, 0.0});
+    f.hunter = f.target - Eigen::Vector3d(config.max_range_m - 2.0, 0.0, 0.0);
+    fly(watch, f, 0.5);  // crossing, it stays within max_range_m for these 0.5 s
+    EXPECT_TRUE(watch.fleeing());
+  }
+}
