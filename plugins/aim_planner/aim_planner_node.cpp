@@ -1,7 +1,8 @@
 // The `aim_planner` node: from the tracker's selected target (camera frame) and the hunter's
 // odometry to the setpoint that puts the target where the net opens, x_E^d, and the order to fire
 // once the aim has held there. A guidance component (kestrel/guidance/guidance.hpp) chooses how
-// the hunter closes in; every law hands over to the same terminal phase, the paper's aim law. Takes off to
+// the hunter closes in; every law hands over to the same terminal phase, the paper's aim law. A target
+// seen fleeing the hunter (an evader, flee_watch.hpp) is flown by a second one, evader_guidance. Takes off to
 // takeoff_altitude_m and waits while nothing is tracked; after losing the target it flies on towards where it was for
 // target_timeout_s, then holds (or searches by turning slowly) until the tracker selects a target again. A selected
 // track near the ground is clutter, never a target.
