@@ -1,16 +1,19 @@
 #!/usr/bin/env python3
 """The capture benchmark's two halves around `kestrel sweep --cases`.
 
-  capture_benchmark.py scenarios N SEED0 FILE [--bands LO:HI,...] [--shapes S,...]
+  capture_benchmark.py scenarios N SEED0 FILE [--bands LO:HI,...] [--families F,...] [--flights DIR]
                                                 draws N random engagements per speed band (seeds
                                                 SEED0.. for the first band, SEED0 + 100000.. for
                                                 the second, ...) as a cases file: one row per run,
-                                                a column per --set
+                                                a column per --set; the agile family's flights are
+                                                written to DIR
   capture_benchmark.py summarise OUTDIR LABEL SWEEPDIR...
                                                 reads the runs' reports and writes OUTDIR/capture.json
   capture_benchmark.py curve FILE.csv LAW=SUMMARY...
                                                 the capture rate per speed band and law, with its
                                                 Wilson 95 % bounds, as a CSV for `kestrel plot`
+  capture_benchmark.py family-curve FILE.csv SUMMARY
+                                                the same per speed band and behaviour family
   capture_benchmark.py combine FILE MAIN [RENDERED]
                                                 the main summary, with the rendered subset's under
                                                 "rendered", as FILE
@@ -21,6 +24,15 @@ Each scenario is drawn from its own seed, so scenario k is the same whatever N i
 for the detection-level and the rendered camera. The ranges are those of docs/control.md
 ("The capture benchmark"): the intruder flies a figure-8, a line back and forth or random
 manoeuvres, 4 to 9 m ahead of the hunter's start, at up to 3 m/s, in a wind of up to 3 m/s.
+
+Behaviour families. The tuning families are the intruder node's own shapes (figure8, line, random,
+jink, evade): the aim's values are chosen on them. The held-out families are never tuned on:
+  agile     the second generator's flights (scripts/agile_flight.py, frozen before any tuning): a
+            point mass that switches every 0.6-2.5 s between turns, dashes to a full stop,
+            zigzags, climbing spirals and hovers, 4-16 m ahead, top speed in the band, 4-10 m/s^2
+  recorded  flights recorded from real vehicles or a real autopilot stack (bench/flights/, their
+            sources in its README), turned to a random heading, placed ahead of the hunter and
+            played at the pace that puts their top speed in the band (0.5 to 2 times as fast)
 
 A speed band LO:HI draws the intruder's top speed in [max(LO, 0.5), HI] m/s; the default band,
 0:3, is the benchmark above, seed for seed. Above 3 m/s an intruder also flies as a multirotor
@@ -38,6 +50,11 @@ import sys
 
 SHAPES = ["figure8", "line", "random"]  # the default
 ALL_SHAPES = SHAPES + ["jink", "evade"]
+TUNING_FAMILIES = ALL_SHAPES  # the intruder node's shapes: the aim is tuned on these
+HELD_OUT_FAMILIES = ["agile", "recorded"]  # never tuned on
+FAMILIES = TUNING_FAMILIES + HELD_OUT_FAMILIES
+RECORDED_FLIGHTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "bench", "flights")
+AGILE_DURATION_S = 60.0  # longer than any engagement the benchmark flies by default
 MAX_INTRUDER_SPEED = 3.0  # m/s: the default band's top, and where the agile scaling starts
 MAX_WIND = 3.0  # m/s
 DISTANCE = (4.0, 9.0)  # m: the intruder's path from the hunter's start (--distance)
@@ -77,9 +94,76 @@ def parse_distance(text):
     return lo, hi
 
 
-def scenario(seed, band=(0.0, MAX_INTRUDER_SPEED), shapes=SHAPES, distance_range=DISTANCE):
+def recorded_flights(folder=RECORDED_FLIGHTS):
+    """The recorded flights: each file's path, its top speed (m/s, over 0.5 s) and its extent."""
+    flights = []
+    for name in sorted(os.listdir(folder)):
+        if not name.endswith(".csv"):
+            continue
+        path = os.path.abspath(os.path.join(folder, name))
+        rows = [(float(r["t"]), float(r["x"]), float(r["y"]), float(r["z"])) for r in csv.DictReader(open(path))]
+        top = 0.0
+        j = 0
+        for i, row in enumerate(rows):  # the speed over 0.5 s: a recording's noise is no speed
+            while j < len(rows) and rows[j][0] < row[0] + 0.5:
+                j += 1
+            if j < len(rows):
+                top = max(top, math.dist(row[1:], rows[j][1:]) / (rows[j][0] - row[0]))
+        low = [min(r[k] for r in rows) for k in (1, 2, 3)]
+        high = [max(r[k] for r in rows) for k in (1, 2, 3)]
+        flights.append({"path": path, "top_speed": top, "low": low, "high": high})
+    if not flights:
+        raise SystemExit(f"no recorded flights (*.csv) in {folder}")
+    return flights
+
+
+def held_out_scenario(s, family, seed, rng, band, flights_dir):
+    """The held-out families' engagements: a flight file the intruder plays (shape file)."""
+    speed_lo, speed_hi = max(band[0], 1.0), band[1]
+    s["intruder.shape"] = "file"
+    s["intruder.at_end"] = "hold"
+    if family == "agile":
+        import agile_flight
+        top_speed, accel = rng.uniform(speed_lo, speed_hi), rng.uniform(4.0, 10.0)
+        os.makedirs(flights_dir, exist_ok=True)
+        path = os.path.abspath(os.path.join(flights_dir, f"agile_{seed}.csv"))
+        agile_flight.write_csv(path, agile_flight.flight(seed, top_speed, accel, AGILE_DURATION_S))
+        s["intruder.file"] = path
+        return s
+    # recorded: a flight that reaches the band's speed at 0.5-2 times its own pace
+    flights = recorded_flights()
+    top_speed = rng.uniform(speed_lo, speed_hi)
+    fits = [f for f in flights if 0.5 * f["top_speed"] <= top_speed <= 2.0 * f["top_speed"]]
+    flight = rng.choice(fits or [max(flights, key=lambda f: f["top_speed"])])
+    scale = min(2.0, max(0.5, top_speed / flight["top_speed"]))
+    yaw = rng.uniform(-math.pi, math.pi)
+    # Turned about its own centre's vertical, the flight's near side lies 4-7 m ahead of the hunter.
+    centre = [(lo + hi) / 2.0 for lo, hi in zip(flight["low"], flight["high"])]
+    c, si = math.cos(yaw), math.sin(yaw)
+    corners = [(x, y) for x in (flight["low"][0], flight["high"][0]) for y in (flight["low"][1], flight["high"][1])]
+    turned = [(c * (x - centre[0]) - si * (y - centre[1]), si * (x - centre[0]) + c * (y - centre[1]))
+              for x, y in corners]
+    near = rng.uniform(4.0, 7.0)
+    ahead = near - min(x for x, _ in turned)
+    lateral = rng.uniform(-1.5, 1.5)
+    height = rng.uniform(1.5, 2.5) - flight["low"][2]
+    # world = R p + offset: the flight's centre, turned, lands at (ahead, lateral)
+    offset = [ahead - (c * centre[0] - si * centre[1]), lateral - (si * centre[0] + c * centre[1]), height]
+    s.update({"intruder.file": flight["path"], "intruder.file_offset_m": vec(offset),
+              "intruder.file_yaw_deg": f"{math.degrees(yaw):.2f}", "intruder.file_time_scale": f"{scale:.4f}"})
+    return s
+
+
+def family_of(params):
+    """A run's behaviour family, from its intruder's parameters."""
+    if params.get("shape") != "file":
+        return params.get("shape", "?")
+    return "agile" if os.path.basename(str(params.get("file", ""))).startswith("agile_") else "recorded"
+
+
+def scenario(seed, band=(0.0, MAX_INTRUDER_SPEED), shapes=SHAPES, distance_range=DISTANCE, flights_dir="flights"):
     rng = random.Random(seed * 7919 + 17)
-    shape = shapes[(seed - 1) % len(shapes)]  # each shape as often as the others
+    shape = shapes[(seed - 1) % len(shapes)]  # each shape (family) as often as the others
     speed_lo, speed_hi = max(band[0], 0.5), band[1]
     distance = rng.uniform(*distance_range)  # from the hunter's start to the intruder's path
     lateral = rng.uniform(-1.5, 1.5)
@@ -88,6 +172,8 @@ def scenario(seed, band=(0.0, MAX_INTRUDER_SPEED), shapes=SHAPES, distance_range
     s = {"seed": seed, "intruder.shape": shape,
          "hunter.wind_m_s": vec([wind_speed * math.cos(wind_dir), wind_speed * math.sin(wind_dir), 0.0]),
          "hunter.gust_std_m_s": f"{0.2 * wind_speed:.3f}"}
+    if shape in HELD_OUT_FAMILIES:
+        return held_out_scenario(s, shape, seed, rng, band, flights_dir)
     if shape == "figure8":
         half_width, half_height = rng.uniform(0.5, 2.0), rng.uniform(0.25, 0.8)
         top_speed = rng.uniform(speed_lo, speed_hi)
@@ -154,8 +240,10 @@ def scenario(seed, band=(0.0, MAX_INTRUDER_SPEED), shapes=SHAPES, distance_range
     return s
 
 
-def write_scenarios(n, seed0, path, bands=((0.0, MAX_INTRUDER_SPEED),), shapes=SHAPES, distance_range=DISTANCE):
-    rows = [scenario(seed0 + b * BAND_SEED_STRIDE + k, band, shapes, distance_range)
+def write_scenarios(n, seed0, path, bands=((0.0, MAX_INTRUDER_SPEED),), shapes=SHAPES, distance_range=DISTANCE,
+                    flights_dir=None):
+    flights_dir = flights_dir or os.path.join(os.path.dirname(os.path.abspath(path)), "flights")
+    rows = [scenario(seed0 + b * BAND_SEED_STRIDE + k, band, shapes, distance_range, flights_dir)
             for b, band in enumerate(bands) for k in range(n)]
     keys = ["seed"] + sorted({k for r in rows for k in r if k != "seed"})
     with open(path, "w", newline="") as f:
@@ -242,6 +330,10 @@ def missed_shots(runs):
             "missed_by_manoeuvre": by_manoeuvre, "missed_by_aim": len(missed) - by_manoeuvre}
 
 
+def family_order(family):
+    return FAMILIES.index(family) if family in FAMILIES else len(FAMILIES)
+
+
 def shape_order(shape):
     return ALL_SHAPES.index(shape) if shape in ALL_SHAPES else len(ALL_SHAPES)
 
@@ -254,14 +346,16 @@ def summarise(out, label, sweep_dirs, bands=None, seed0=1):
             report_file = os.path.join(runs_dir, name, "report.json")
             seed = int(name.split("_seed")[1])
             if not os.path.exists(report_file):
-                runs.append({"seed": seed, "captured": False, "cause": "run failed: no report", "shape": "?"})
+                runs.append({"seed": seed, "captured": False, "cause": "run failed: no report", "shape": "?",
+                             "family": "?"})
                 continue
             r = json.load(open(report_file))
             c = r.get("control", {})
             nodes = r["graph"]["resolved"]["nodes"]
             shape = nodes["intruder"]["params"]["shape"]
             guidance = nodes.get("aim", {}).get("params", {}).get("guidance")
-            runs.append({"seed": seed, "shape": shape, "captured": c.get("captured") is True,
+            runs.append({"seed": seed, "shape": shape, "family": family_of(nodes["intruder"]["params"]),
+                         "captured": c.get("captured") is True,
                          "guidance": guidance.get("type") if isinstance(guidance, dict) else guidance,
                          "first_shot_captured": c.get("first_shot_captured") is True,
                          "time_to_capture_s": c.get("time_to_capture_s"), "aim_rmse_m": c.get("aim_rmse_m"),
@@ -294,6 +388,16 @@ def summarise(out, label, sweep_dirs, bands=None, seed0=1):
         for x in runs:
             x["band"] = band_label(bands[(x["seed"] - seed0) // BAND_SEED_STRIDE])
         summary["by_band"] = [band_figures(b, [x for x in runs if x["band"] == band_label(b)]) for b in bands]
+    # By behaviour family and speed band (the default band when none was asked for).
+    for x in runs:
+        x.setdefault("band", band_label((0.0, MAX_INTRUDER_SPEED)))
+    families = sorted({x["family"] for x in runs}, key=family_order)
+    summary["families"] = {"tuning": [f for f in families if f in TUNING_FAMILIES],
+                           "held_out": [f for f in families if f in HELD_OUT_FAMILIES]}
+    band_order = [band_label(b) for b in bands] if bands else [band_label((0.0, MAX_INTRUDER_SPEED))]
+    summary["by_family"] = {f: {b: group_figures(group) for b in band_order
+                                if (group := [x for x in runs if x["family"] == f and x["band"] == b])}
+                            for f in families}
     os.makedirs(out, exist_ok=True)
     with open(os.path.join(out, "capture.json"), "w") as f:
         json.dump(summary, f, indent=2)
@@ -327,6 +431,20 @@ def markdown(summaries, scenarios_file):
                              f"{f(b['first_shot_rate'], '.1%')} | {f(b['median_time_to_capture_s'], '.1f')} | "
                              f"{f(b['median_nets_used'], 'g')} | {f(b['first_seen_closer_than_4m'], '.0%')} | "
                              f"{b['shots']} | {b['missed_by_manoeuvre']} + {b['missed_by_aim']} |")
+    if any("by_family" in s for s in summaries):
+        lines += ["", "## By behaviour family", "",
+                  "Tuning families: the aim's values were chosen on them; held-out families: never tuned on. Rates "
+                  "with their Wilson 95 % interval.", "",
+                  "| camera | family | kind | band [m/s] | runs | captured | rate | 95 % interval | first shot | "
+                  "median time [s] |", "|---|---|---|---|---:|---:|---:|---|---:|---:|"]
+        for s in summaries:
+            for family, by_band in s.get("by_family", {}).items():
+                kind = "held out" if family in s.get("families", {}).get("held_out", []) else "tuning"
+                for band, b in by_band.items():
+                    lines.append(f"| {s['camera']} | {family} | {kind} | {band} | {b['runs']} | {b['captured']} | "
+                                 f"{f(b['rate'], '.1%')} | {f(b['wilson_low'], '.1%')} to "
+                                 f"{f(b['wilson_high'], '.1%')} | {f(b['first_shot_rate'], '.1%')} | "
+                                 f"{f(b['median_time_to_capture_s'], '.1f')} |")
     for s in summaries:
         lines += ["", f"## {s['camera']}: by shape", "", "| shape | runs | captured |", "|---|---:|---:|"]
         for shape, v in s["by_shape"].items():
@@ -350,6 +468,22 @@ def write_curve(path, laws):
             w.writerow(row)
 
 
+def write_family_curve(path, summary):
+    """One row per band: its mid speed, and each family's rate with its Wilson bounds (blank where the
+    family flew nothing in that band)."""
+    bands = [(b["lo_m_s"], b["hi_m_s"]) for b in summary["by_band"]]
+    families = list(summary["by_family"])
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["band", "speed_m_s"] + [f"{x}{suffix}" for x in families for suffix in ("", "_low", "_high")])
+        for band in bands:
+            row = [band_label(band), (max(band[0], 0.5) + band[1]) / 2.0]
+            for family in families:
+                b = summary["by_family"][family].get(band_label(band))
+                row += [b["rate"], b["wilson_low"], b["wilson_high"]] if b else ["", "", ""]
+            w.writerow(row)
+
+
 def main(argv):
     import argparse
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -359,8 +493,9 @@ def main(argv):
     p.add_argument("seed0", type=int)
     p.add_argument("file")
     p.add_argument("--bands", default=None)
-    p.add_argument("--shapes", default=",".join(SHAPES))
+    p.add_argument("--shapes", "--families", dest="shapes", default=",".join(SHAPES))
     p.add_argument("--distance", default="4:9")
+    p.add_argument("--flights", default=None, help="where the agile family's flights are written")
     p = sub.add_parser("summarise")
     p.add_argument("out")
     p.add_argument("label")
@@ -375,6 +510,9 @@ def main(argv):
     p = sub.add_parser("markdown")
     p.add_argument("cases")
     p.add_argument("summaries", nargs="+")
+    p = sub.add_parser("family-curve")
+    p.add_argument("file")
+    p.add_argument("summary")
     p = sub.add_parser("curve")
     p.add_argument("file")
     p.add_argument("laws", nargs="+", help="LAW=SUMMARY")
@@ -382,9 +520,9 @@ def main(argv):
     if a.command == "scenarios":
         bands = parse_bands(a.bands) if a.bands else [(0.0, MAX_INTRUDER_SPEED)]
         shapes = a.shapes.split(",")
-        if unknown := [x for x in shapes if x not in ALL_SHAPES]:
-            raise SystemExit(f"unknown shape(s) {', '.join(unknown)}: choose from {', '.join(ALL_SHAPES)}")
-        write_scenarios(a.n, a.seed0, a.file, bands, shapes, parse_distance(a.distance))
+        if unknown := [x for x in shapes if x not in FAMILIES]:
+            raise SystemExit(f"unknown family (shape) {', '.join(unknown)}: choose from {', '.join(FAMILIES)}")
+        write_scenarios(a.n, a.seed0, a.file, bands, shapes, parse_distance(a.distance), a.flights)
     elif a.command == "summarise":
         summarise(a.out, a.label, a.sweep_dirs, parse_bands(a.bands) if a.bands else None, a.seed0)
     elif a.command == "combine":
@@ -401,6 +539,8 @@ def main(argv):
             json.dump(combined, f, indent=2)
     elif a.command == "markdown":
         sys.stdout.write(markdown([json.load(open(p)) for p in a.summaries], a.cases))
+    elif a.command == "family-curve":
+        write_family_curve(a.file, json.load(open(a.summary)))
     elif a.command == "curve":
         write_curve(a.file, {law: json.load(open(path)) for law, _, path in (item.partition("=") for item in a.laws)})
 

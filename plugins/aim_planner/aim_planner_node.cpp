@@ -12,7 +12,9 @@
 #include <cmath>
 #include <kestrel/geometry/frames.hpp>
 #include <kestrel/guidance/aim_reference.hpp>
+#include <kestrel/guidance/capture_chance.hpp>
 #include <kestrel/guidance/guidance.hpp>
+#include <kestrel/guidance/target_futures.hpp>
 #include <kestrel/messages/net_fire.hpp>
 #include <kestrel/messages/net_launcher.hpp>
 #include <kestrel/messages/tracks.hpp>
@@ -27,6 +29,7 @@
 #include <optional>
 
 #include "fire_decision.hpp"
+#include "fire_policy.hpp"
 #include "flee_watch.hpp"
 #include "line_patrol.hpp"
 #include "lost_search.hpp"
@@ -124,6 +127,8 @@ struct AimPlannerConfig {
   double cooldown_s = 3.0;
   ComponentConfig guidance;
   ComponentConfig evader_guidance;
+  ComponentConfig predictor;
+  ComponentConfig fire_policy;
 };
 
 class AimPlannerNode final : public Node {
@@ -515,6 +520,16 @@ class AimPlannerNode final : public Node {
             "flee_min_speed_m_s: the law for a target seen fleeing the hunter (an evader) instead of guidance: "
             "hold_aim (terminal from the start, at flee_aim_point_m), or run_in (stalk it outside the radius where "
             "it flees, then a pass at speed)");
+    c.component("predictor", &C::predictor, "predictor", "imm_samples")
+        .describe(
+            "the target's futures, sampled from its world-frame estimate (target_filter imm: each model's paths by its "
+            "probability): the paths a planner (guidance intercept_search) and the fire policy capture_value weigh "
+            "launches on");
+    c.component("fire_policy", &C::fire_policy, "fire_policy", "threshold")
+        .describe(
+            "whether a shot is worth a net: threshold (the aim's own thresholds, fire_probability or "
+            "capture_radius_m), or capture_value (the chance of a capture now on the target's futures against what "
+            "keeping the net is worth, the planner's best later launch)");
     c.rule("oscillation_min_omega_rad_s < oscillation_max_omega_rad_s",
            {"oscillation_min_omega_rad_s", "oscillation_max_omega_rad_s"},
            [](const C& k) { return k.oscillation_min_omega_rad_s < k.oscillation_max_omega_rad_s; });
@@ -562,7 +577,9 @@ class AimPlannerNode final : public Node {
   explicit AimPlannerNode(NodeInit& init)
       : cfg_(init.config<AimPlannerConfig>()),
         guidance_(init.make_component<guidance::Guidance>("guidance")),
-        evader_guidance_(init.make_component<guidance::Guidance>("evader_guidance")) {
+        evader_guidance_(init.make_component<guidance::Guidance>("evader_guidance")),
+        predictor_(init.make_component<guidance::Predictor>("predictor")),
+        fire_policy_(init.make_component<FirePolicy>("fire_policy")) {
     if (cfg_.patrol_min_length_m > 0.0)
       patrol_.emplace(LinePatrolConfig{.window_s = cfg_.patrol_window_s,
                                        .min_length_m = cfg_.patrol_min_length_m,
@@ -603,12 +620,14 @@ class AimPlannerNode final : public Node {
     std::optional<double> miss, probability, spread;
     std::optional<PredictedShot> shot;
     std::optional<ShotUncertainty> uncertainty;
+    double capture_now = 0.0;
     // An evader stays one through its estimate's restarts (it breaks out of view, and is found again
     // by the search), until nothing has been seen for flee_forget_s.
     if ((flee_.fleeing() || flee_.own_path()) && t - last_seen_ > cfg_.flee_forget_s) flee_.reset();
     if (estimate_ && t - last_seen_ > cfg_.target_timeout_s) {  // too old to predict from
       estimate_.reset();
       oscillation_.reset();
+      futures_.paths.clear();
     }
     if (estimate_) estimate_->predict(dt);
     if (!target && estimate_ && (cfg_.follow_sighted_track || evader())) {
@@ -646,6 +665,7 @@ class AimPlannerNode final : public Node {
         estimate_->update(intruder);
       }
       if (oscillation_) oscillation_->add(t, intruder);
+      futures_ = predictor_->predict(estimate_->hypotheses());
       const Eigen::VectorXd x = estimate_->state();
       // A patrol flies its own line, away from the hunter waiting at its end as often as towards it.
       if (cfg_.flee_min_speed_m_s > 0.0 && !patrol_found()) {
@@ -698,6 +718,9 @@ class AimPlannerNode final : public Node {
                                     cfg_.shot_manoeuvre_m_s2 + cfg_.shot_turn_rate_rad_s * x.segment<3>(3).norm()};
       // Every frame only when it decides the shot; otherwise once, for the shot's record.
       if (cfg_.fire_probability > 0.0) probability = hit_probability(*shot, *uncertainty, cfg_.net_radius_m);
+      // The same launch counted on the futures (from the estimate's time: the launch is `lead` later).
+      capture_now =
+          guidance::capture_chance(futures_, open_net_, guidance::Launch{lead, launch, hunter->velocity}).probability;
     }
 
     if (goal_ && target) {
@@ -706,6 +729,7 @@ class AimPlannerNode final : public Node {
       flown_as_evader_ = evader();
       guidance::Guidance& law = evader() ? *evader_guidance_ : *guidance_;
       const guidance::GuidanceCommand command = law.command(engagement(dt));
+      later_value_ = command.later_value;
       if (command.terminal) {
         ++terminal_frames_;
         reference_->advance(*goal_, goal_velocity_, dt);
@@ -744,7 +768,10 @@ class AimPlannerNode final : public Node {
       // goes up before it goes forward).
       reference_->advance(armed_ ? search_ : takeoff_, Eigen::Vector3d::Zero(), dt);
     }
-    if (target) holding_ = false;
+    if (target)
+      holding_ = false;
+    else
+      later_value_.reset();
 
     msg::TrajectorySetpoint sp;
     sp.stamp = tracks->stamp;
@@ -756,7 +783,10 @@ class AimPlannerNode final : public Node {
     ctx.publish(kSetpoint, std::move(sp));
 
     const bool trusted = spread && (cfg_.max_shot_spread_m <= 0.0 || *spread <= cfg_.max_shot_spread_m);
-    if (fire_.decide(t, launcher_ready(ctx, t) && trusted && worth_a_net(ctx, miss, probability))) {
+    const auto launcher = ctx.get(kLauncher);
+    const FireChances chances{worth_a_net(ctx, miss, probability), capture_now, later_value_,
+                              launcher ? static_cast<int>(launcher->nets_left) : -1};
+    if (fire_.decide(t, launcher_ready(ctx, t) && trusted && target && fire_policy_->worth_a_net(chances))) {
       ++fire_count_;
       if (!first_fire_) first_fire_ = t;
       if (!probability) probability = hit_probability(*shot, *uncertainty, cfg_.net_radius_m);
@@ -767,6 +797,8 @@ class AimPlannerNode final : public Node {
                             {"predicted_miss_m", *miss},
                             {"probability", probability ? nlohmann::json(*probability) : nlohmann::json()},
                             {"spread_m", *spread},
+                            {"capture_now", capture_now},
+                            {"later_value", later_value_ ? nlohmann::json(*later_value_) : nlohmann::json()},
                             {"predicted_time_s", shot->time_s},
                             {"estimate_age_s", t - estimate_since_},
                             {"prediction", prediction_record(*shot, uncertainty->lead_s, *estimate_, oscillation_)}};
@@ -962,6 +994,7 @@ class AimPlannerNode final : public Node {
     e.dt = dt;
     e.position = reference_->position();
     e.velocity = reference_->velocity();
+    e.acceleration = reference_->acceleration();
     e.yaw = reference_->yaw();
     const Eigen::VectorXd x = estimate_->state();
     e.target.position = x.head<3>();
@@ -972,6 +1005,8 @@ class AimPlannerNode final : public Node {
     e.geometry = {aim_point(), cfg_.camera_offset_m};
     e.limits = {cfg_.max_speed_m_s, cfg_.max_acceleration_m_s2};
     e.min_altitude = cfg_.min_altitude_m;
+    e.futures = futures_.empty() ? nullptr : &futures_;
+    e.net = &open_net_;
     return e;
   }
 
@@ -1057,6 +1092,12 @@ class AimPlannerNode final : public Node {
   FleeWatch flee_{{cfg_.flee_min_speed_m_s, cfg_.flee_min_share, cfg_.flee_max_range_m, cfg_.flee_min_closing_m_s,
                    cfg_.flee_time_s, cfg_.flee_calm_speed_m_s, cfg_.flee_calm_time_s}};
   net::NetModel net_{{cfg_.net_open_point_m, cfg_.net_flight_time_s, cfg_.capture_radius_m, cfg_.net_open_s}};
+  // The net as it catches (net_radius_m), for the capture chance on the futures.
+  net::NetModel open_net_{{cfg_.net_open_point_m, cfg_.net_flight_time_s, cfg_.net_radius_m, cfg_.net_open_s}};
+  std::shared_ptr<guidance::Predictor> predictor_;
+  std::shared_ptr<FirePolicy> fire_policy_;
+  guidance::TargetFutures futures_;    // this frame's, from the estimate's time
+  std::optional<double> later_value_;  // the planner's best later launch, discounted
   AimPose takeoff_, search_, standoff_;
   Eigen::Vector3d last_target_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d last_target_velocity_ = Eigen::Vector3d::Zero();

@@ -1,11 +1,16 @@
-// The guidance laws the aim planner ships (kestrel/guidance/*.hpp); a plugin can register more.
+// The components the aim planner ships: its guidance laws (kestrel/guidance/*.hpp), the
+// predictor of the target's futures and the fire policies; a plugin can register more.
 #include <kestrel/guidance/fast_response_pn.hpp>
 #include <kestrel/guidance/hold_aim.hpp>
+#include <kestrel/guidance/intercept_search.hpp>
 #include <kestrel/guidance/predictive.hpp>
 #include <kestrel/guidance/proportional_navigation.hpp>
 #include <kestrel/guidance/pursuit.hpp>
 #include <kestrel/guidance/run_in.hpp>
+#include <kestrel/guidance/target_futures.hpp>
 #include <kestrel/plugin.hpp>
+
+#include "fire_policy.hpp"
 
 KESTREL_REGISTER_COMPONENT(kestrel::guidance::Guidance, kestrel::guidance::HoldAim)
 KESTREL_REGISTER_COMPONENT(kestrel::guidance::Guidance, kestrel::guidance::Pursuit)
@@ -13,3 +18,7 @@ KESTREL_REGISTER_COMPONENT(kestrel::guidance::Guidance, kestrel::guidance::Propo
 KESTREL_REGISTER_COMPONENT(kestrel::guidance::Guidance, kestrel::guidance::FastResponsePn)
 KESTREL_REGISTER_COMPONENT(kestrel::guidance::Guidance, kestrel::guidance::Predictive)
 KESTREL_REGISTER_COMPONENT(kestrel::guidance::Guidance, kestrel::guidance::RunIn)
+KESTREL_REGISTER_COMPONENT(kestrel::guidance::Guidance, kestrel::guidance::InterceptSearch)
+KESTREL_REGISTER_COMPONENT(kestrel::guidance::Predictor, kestrel::guidance::ImmSamples)
+KESTREL_REGISTER_COMPONENT(kestrel::aim::FirePolicy, kestrel::aim::ThresholdFire)
+KESTREL_REGISTER_COMPONENT(kestrel::aim::FirePolicy, kestrel::aim::CaptureValue)

@@ -56,4 +56,16 @@ std::vector<double> TargetEstimate::model_probabilities() const {
   return {};
 }
 
+std::vector<guidance::MotionHypothesis> TargetEstimate::hypotheses() const {
+  if (const auto* imm = std::get_if<tracking::ImmTrack>(&filter_)) {
+    std::vector<guidance::MotionHypothesis> out;
+    for (std::size_t i = 0; i < imm->models().size(); ++i)
+      out.push_back({imm->models()[i].motion, imm->model_filters()[i].x, imm->model_filters()[i].P,
+                     imm->model_probabilities()[i]});
+    return out;
+  }
+  const auto& kalman = std::get<tracking::KalmanTrack>(filter_);
+  return {{tracking::MotionModel::constant_acceleration, kalman.state(), kalman.covariance(), 1.0}};
+}
+
 }  // namespace kestrel::aim

@@ -5,6 +5,7 @@
 // kestrel/tracking/imm_filter.hpp), and how uncertain its prediction grows over the time a net
 // flies.
 #include <Eigen/Core>
+#include <kestrel/guidance/target_futures.hpp>
 #include <kestrel/tracking/imm_filter.hpp>
 #include <kestrel/tracking/kalman_filter.hpp>
 #include <variant>
@@ -37,6 +38,8 @@ class TargetEstimate {
   Eigen::Vector3d position_after(double tau) const;
   /// The imm's model probabilities (cv, ca, ct); empty for a single model.
   std::vector<double> model_probabilities() const;
+  /// Each model's state, covariance and probability, for the predictor of the target's futures.
+  std::vector<guidance::MotionHypothesis> hypotheses() const;
 
  private:
   std::variant<tracking::KalmanTrack, tracking::ImmTrack> filter_;

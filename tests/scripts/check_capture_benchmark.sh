@@ -107,6 +107,43 @@ if scripts/capture-benchmark "$out/bad" --seeds 1 --rendered 0 --shapes evade,lo
   exit 1
 fi
 
+# Behaviour families: the held-out ones fly flight files (the second generator's, drawn per seed, and
+# the recorded flights, placed ahead of the hunter); capture.json gives each family's figures by band,
+# recounted here from the runs, and says which families are held out; the curve draws each family.
+families=$out/families
+scripts/capture-benchmark "$families" --seeds 2 --rendered 0 --duration 6 --bands 0:3,6:10 \
+  --families random,agile,recorded > /dev/null
+python3 - "$families" <<'PY'
+import csv, json, os, sys
+out = sys.argv[1]
+cases = list(csv.DictReader(open(os.path.join(out, "cases.csv"))))
+assert [c["seed"] for c in cases] == ["1", "2", "100001", "100002"], cases
+# The families in turn, by seed.
+families = ["random", "agile", "recorded"]
+for c in cases:
+    family = families[(int(c["seed"]) - 1) % 3]
+    if family == "agile":
+        assert c["intruder.shape"] == "file" and os.path.basename(c["intruder.file"]) == f"agile_{c['seed']}.csv", c
+        assert os.path.exists(c["intruder.file"]), c
+    elif family == "recorded":
+        assert c["intruder.shape"] == "file" and "bench/flights/" in c["intruder.file"], c
+        assert 0.5 <= float(c["intruder.file_time_scale"]) <= 2.0, c
+    else:
+        assert c["intruder.shape"] == "random", c
+doc = json.load(open(os.path.join(out, "capture.json")))
+assert doc["families"] == {"tuning": ["random"], "held_out": ["agile", "recorded"]}, doc["families"]
+assert [r["family"] for r in doc["per_run"]] == [families[(r["seed"] - 1) % 3] for r in doc["per_run"]]
+for family, by_band in doc["by_family"].items():
+    for band, b in by_band.items():
+        runs = [r for r in doc["per_run"] if r["family"] == family and r["band"] == band]
+        assert b["runs"] == len(runs) >= 1 and b["captured"] == sum(r["captured"] for r in runs), (family, band, b)
+        assert b["wilson_low"] <= b["rate"] <= b["wilson_high"], b
+assert os.path.getsize(os.path.join(out, "capture_curve.png")) > 1000
+rows = list(csv.DictReader(open(os.path.join(out, "capture_curve.csv"))))
+assert [r["band"] for r in rows] == ["0:3", "6:10"] and "agile_low" in rows[0] and "recorded" in rows[0], rows
+assert "| agile | held out |" in open(os.path.join(out, "capture.md")).read()
+PY
+
 # Another graph on the same engagements: a variant that includes the shipped graph and changes a
 # parameter; every run's report names it.
 variant=$out/variant

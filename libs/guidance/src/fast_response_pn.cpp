@@ -43,7 +43,7 @@ FastResponsePn::FastResponsePn(const ComponentInit& init) : cfg_(init.config<Fas
 GuidanceCommand FastResponsePn::command(const Engagement& e) {
   if (within_handover(e, cfg_.handover_m)) return terminal_phase();
   const Eigen::Vector3d a = frpn_acceleration(cfg_, e.position, e.velocity, e.aim.position, e.target.velocity);
-  return {e.velocity + a * e.dt, e.aim.yaw, false};
+  return {e.velocity + a * e.dt, e.aim.yaw, false, std::nullopt};
 }
 
 }  // namespace kestrel::guidance

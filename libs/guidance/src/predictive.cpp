@@ -62,14 +62,14 @@ GuidanceCommand Predictive::command(const Engagement& e) {
   if (const auto p = plan(e)) {
     const double tau = std::max(p->time_s, cfg_.min_time_to_go_s);
     const Eigen::Vector3d a = rendezvous_acceleration(e.position, e.velocity, p->point, p->arrival_velocity, tau);
-    return {e.velocity + a * e.dt, e.aim.yaw, false};
+    return {e.velocity + a * e.dt, e.aim.yaw, false, std::nullopt};
   }
   // Out of reach within the horizon: close in on where the target is going.
   TargetMotion m = e.target;
   m.acceleration.setZero();
   Eigen::Vector3d far = aim_pose(m.at(cfg_.horizon_s), e.position, e.yaw, e.geometry).position;
   far.z() = std::max(far.z(), e.min_altitude);
-  return {(far - e.position).normalized() * e.limits.max_speed, e.aim.yaw, false};
+  return {(far - e.position).normalized() * e.limits.max_speed, e.aim.yaw, false, std::nullopt};
 }
 
 }  // namespace kestrel::guidance

@@ -55,7 +55,7 @@ GuidanceCommand ProportionalNavigation::command(const Engagement& e) {
   if (within_handover(e, cfg_.handover_m)) return terminal_phase();
   const Eigen::Vector3d a = pn_acceleration(cfg_, e.limits.max_speed, e.position, e.velocity, e.aim.position,
                                             e.target.velocity, e.target.acceleration);
-  return {e.velocity + a * e.dt, e.aim.yaw, false};
+  return {e.velocity + a * e.dt, e.aim.yaw, false, std::nullopt};
 }
 
 }  // namespace kestrel::guidance

@@ -26,7 +26,7 @@ Pursuit::Pursuit(const ComponentInit& init) : cfg_(init.config<PursuitConfig>())
 GuidanceCommand Pursuit::command(const Engagement& e) {
   if (within_handover(e, cfg_.handover_m)) return terminal_phase();
   const Eigen::Vector3d r = e.aim.position - e.position;
-  return {r.normalized() * e.limits.max_speed, e.aim.yaw, false};
+  return {r.normalized() * e.limits.max_speed, e.aim.yaw, false, std::nullopt};
 }
 
 }  // namespace kestrel::guidance

@@ -94,7 +94,7 @@ GuidanceCommand RunIn::command(const Engagement& e) {
   } else {
     v.head<2>() += cfg_.gain_1_s * (stalk - e.position.head<2>());
   }
-  return {v, yaw, false};
+  return {v, yaw, false, std::nullopt};
 }
 
 }  // namespace kestrel::guidance

@@ -13,10 +13,13 @@
 // Implementations: hold_aim (the paper's), pursuit, pn, frpn, predictive (docs/control.md,
 // "Guidance laws").
 #include <Eigen/Core>
+#include <optional>
 #include <string_view>
 
 #include "kestrel/guidance/aim_pose.hpp"
+#include "kestrel/guidance/target_futures.hpp"
 #include "kestrel/guidance/target_motion.hpp"
+#include "kestrel/net/net_model.hpp"
 
 namespace kestrel::guidance {
 
@@ -32,6 +35,7 @@ struct Engagement {
   /// The reference the setpoint follows: the law commands its velocity.
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+  Eigen::Vector3d acceleration = Eigen::Vector3d::Zero();
   double yaw = 0.0;
   TargetMotion target;  ///< the aim's estimate of the target
   /// Where the hunter must be now for the target to sit at x_E^d (never below the least altitude).
@@ -39,6 +43,11 @@ struct Engagement {
   AimGeometry geometry;
   FlightLimits limits;
   double min_altitude = 0.0;  ///< m: no aim pose below this
+  /// The target's sampled futures, from the estimate's time (none: a law that needs them hands
+  /// over to the terminal phase).
+  const TargetFutures* futures = nullptr;
+  /// The launcher's net (none: as for the futures).
+  const net::NetModel* net = nullptr;
 };
 
 /// A law's answer: the reference's wanted velocity (limited by the reference) and heading, or
@@ -47,6 +56,9 @@ struct GuidanceCommand {
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
   double yaw = 0.0;
   bool terminal = false;  ///< true: the aim planner aligns the net instead (velocity, yaw unused)
+  /// A law that plans its launch on the futures: what a later launch is worth, its chance of a
+  /// capture discounted for the wait; the fire policy weighs a shot now against it.
+  std::optional<double> later_value;
 };
 
 class Guidance {
@@ -65,6 +77,6 @@ inline bool within_handover(const Engagement& e, double handover_m) {
 }
 
 /// A terminal command.
-inline GuidanceCommand terminal_phase() { return {Eigen::Vector3d::Zero(), 0.0, true}; }
+inline GuidanceCommand terminal_phase() { return {Eigen::Vector3d::Zero(), 0.0, true, std::nullopt}; }
 
 }  // namespace kestrel::guidance

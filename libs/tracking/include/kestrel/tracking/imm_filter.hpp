@@ -54,6 +54,8 @@ class ImmTrack final : public MomentTrackFilter {
   /// Probability of each model, in the order of models(); they sum to 1.
   const std::vector<double>& model_probabilities() const { return mu_; }
   const std::vector<ImmModel>& models() const { return models_; }
+  /// Each model's own filter (its state and covariance), in the order of models().
+  const std::vector<ConstantAccelerationKalman>& model_filters() const { return filters_; }
   /// The state predicted tau seconds ahead without changing the filter: each model's own
   /// prediction, weighted by its probability now (no further switching).
   State predicted_state(double tau) const;

@@ -1,0 +1,42 @@
+#include "kestrel/guidance/capture_chance.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace kestrel::guidance {
+
+CaptureChance capture_chance(const TargetFutures& futures, const net::NetModel& net, const Launch& launch,
+                             const std::vector<Eigen::Vector3d>& launcher_errors, bool seen_at_launch) {
+  CaptureChance chance;
+  if (futures.empty()) return chance;
+  const net::NetParams& p = net.params();
+  const net::NetShot shot = net.fire(launch.time_s, launch.launcher, launch.velocity);
+  // The net's centre while open, every 30 ms at most (a net several m/s fast crosses a path
+  // between two checks otherwise; the paths are linear between their own steps).
+  const int checks = std::max(2, static_cast<int>(std::ceil(p.open_for_s / 0.03)) + 1);
+  std::vector<double> when(static_cast<std::size_t>(checks));
+  std::vector<Eigen::Vector3d> centre(static_cast<std::size_t>(checks));
+  for (int k = 0; k < checks; ++k) {
+    when[static_cast<std::size_t>(k)] = launch.time_s + p.flight_time_s + p.open_for_s * k / (checks - 1);
+    centre[static_cast<std::size_t>(k)] = net.position(shot, when[static_cast<std::size_t>(k)]);
+  }
+  const double spread = 2.0 * p.radius_m;
+  int caught = 0;
+  double closeness = 0.0;
+  const Eigen::Vector3d mean_at_launch = seen_at_launch ? futures.mean(launch.time_s) : Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < futures.size(); ++i) {
+    Eigen::Vector3d error = i < launcher_errors.size() ? launcher_errors[i] : Eigen::Vector3d::Zero();
+    if (seen_at_launch) error += futures.position(i, launch.time_s) - mean_at_launch;
+    double least = INFINITY;
+    for (std::size_t k = 0; k < when.size(); ++k)
+      least = std::min(least, (futures.position(i, when[k]) - centre[k] - error).norm());
+    if (least <= p.radius_m) ++caught;
+    closeness += std::exp(-least * least / (2.0 * spread * spread));
+  }
+  const auto n = static_cast<double>(futures.size());
+  chance.probability = caught / n;
+  chance.closeness = closeness / n;
+  return chance;
+}
+
+}  // namespace kestrel::guidance
