@@ -48,13 +48,15 @@ import random
 import statistics
 import sys
 
+import capture_report
+import held_out_families
+from capture_report import band_label
+
 SHAPES = ["figure8", "line", "random"]  # the default
 ALL_SHAPES = SHAPES + ["jink", "evade"]
 TUNING_FAMILIES = ALL_SHAPES  # the intruder node's shapes: the aim is tuned on these
 HELD_OUT_FAMILIES = ["agile", "recorded"]  # never tuned on
 FAMILIES = TUNING_FAMILIES + HELD_OUT_FAMILIES
-RECORDED_FLIGHTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "bench", "flights")
-AGILE_DURATION_S = 60.0  # longer than any engagement the benchmark flies by default
 MAX_INTRUDER_SPEED = 3.0  # m/s: the default band's top, and where the agile scaling starts
 MAX_WIND = 3.0  # m/s
 DISTANCE = (4.0, 9.0)  # m: the intruder's path from the hunter's start (--distance)
@@ -75,10 +77,6 @@ def parse_bands(text):
     return bands
 
 
-def band_label(band):
-    return f"{band[0]:g}:{band[1]:g}"
-
-
 def vec(v):
     return "[" + ", ".join(f"{x:.3f}" for x in v) + "]"
 
@@ -92,66 +90,6 @@ def parse_distance(text):
     if not 1.0 <= lo <= hi:
         raise SystemExit(f"bad distance '{text}': expected 1 <= LO <= HI")
     return lo, hi
-
-
-def recorded_flights(folder=RECORDED_FLIGHTS):
-    """The recorded flights: each file's path, its top speed (m/s, over 0.5 s) and its extent."""
-    flights = []
-    for name in sorted(os.listdir(folder)):
-        if not name.endswith(".csv"):
-            continue
-        path = os.path.abspath(os.path.join(folder, name))
-        rows = [(float(r["t"]), float(r["x"]), float(r["y"]), float(r["z"])) for r in csv.DictReader(open(path))]
-        top = 0.0
-        j = 0
-        for i, row in enumerate(rows):  # the speed over 0.5 s: a recording's noise is no speed
-            while j < len(rows) and rows[j][0] < row[0] + 0.5:
-                j += 1
-            if j < len(rows):
-                top = max(top, math.dist(row[1:], rows[j][1:]) / (rows[j][0] - row[0]))
-        low = [min(r[k] for r in rows) for k in (1, 2, 3)]
-        high = [max(r[k] for r in rows) for k in (1, 2, 3)]
-        flights.append({"path": path, "top_speed": top, "low": low, "high": high})
-    if not flights:
-        raise SystemExit(f"no recorded flights (*.csv) in {folder}")
-    return flights
-
-
-def held_out_scenario(s, family, seed, rng, band, flights_dir):
-    """The held-out families' engagements: a flight file the intruder plays (shape file)."""
-    speed_lo, speed_hi = max(band[0], 1.0), band[1]
-    s["intruder.shape"] = "file"
-    s["intruder.at_end"] = "hold"
-    if family == "agile":
-        import agile_flight
-        top_speed, accel = rng.uniform(speed_lo, speed_hi), rng.uniform(4.0, 10.0)
-        os.makedirs(flights_dir, exist_ok=True)
-        path = os.path.abspath(os.path.join(flights_dir, f"agile_{seed}.csv"))
-        agile_flight.write_csv(path, agile_flight.flight(seed, top_speed, accel, AGILE_DURATION_S))
-        s["intruder.file"] = path
-        return s
-    # recorded: a flight that reaches the band's speed at 0.5-2 times its own pace
-    flights = recorded_flights()
-    top_speed = rng.uniform(speed_lo, speed_hi)
-    fits = [f for f in flights if 0.5 * f["top_speed"] <= top_speed <= 2.0 * f["top_speed"]]
-    flight = rng.choice(fits or [max(flights, key=lambda f: f["top_speed"])])
-    scale = min(2.0, max(0.5, top_speed / flight["top_speed"]))
-    yaw = rng.uniform(-math.pi, math.pi)
-    # Turned about its own centre's vertical, the flight's near side lies 4-7 m ahead of the hunter.
-    centre = [(lo + hi) / 2.0 for lo, hi in zip(flight["low"], flight["high"])]
-    c, si = math.cos(yaw), math.sin(yaw)
-    corners = [(x, y) for x in (flight["low"][0], flight["high"][0]) for y in (flight["low"][1], flight["high"][1])]
-    turned = [(c * (x - centre[0]) - si * (y - centre[1]), si * (x - centre[0]) + c * (y - centre[1]))
-              for x, y in corners]
-    near = rng.uniform(4.0, 7.0)
-    ahead = near - min(x for x, _ in turned)
-    lateral = rng.uniform(-1.5, 1.5)
-    height = rng.uniform(1.5, 2.5) - flight["low"][2]
-    # world = R p + offset: the flight's centre, turned, lands at (ahead, lateral)
-    offset = [ahead - (c * centre[0] - si * centre[1]), lateral - (si * centre[0] + c * centre[1]), height]
-    s.update({"intruder.file": flight["path"], "intruder.file_offset_m": vec(offset),
-              "intruder.file_yaw_deg": f"{math.degrees(yaw):.2f}", "intruder.file_time_scale": f"{scale:.4f}"})
-    return s
 
 
 def family_of(params):
@@ -173,7 +111,7 @@ def scenario(seed, band=(0.0, MAX_INTRUDER_SPEED), shapes=SHAPES, distance_range
          "hunter.wind_m_s": vec([wind_speed * math.cos(wind_dir), wind_speed * math.sin(wind_dir), 0.0]),
          "hunter.gust_std_m_s": f"{0.2 * wind_speed:.3f}"}
     if shape in HELD_OUT_FAMILIES:
-        return held_out_scenario(s, shape, seed, rng, band, flights_dir)
+        return held_out_families.scenario(s, shape, seed, rng, band, flights_dir, vec)
     if shape == "figure8":
         half_width, half_height = rng.uniform(0.5, 2.0), rng.uniform(0.25, 0.8)
         top_speed = rng.uniform(speed_lo, speed_hi)
@@ -404,86 +342,6 @@ def summarise(out, label, sweep_dirs, bands=None, seed0=1):
     return summary
 
 
-def markdown(summaries, scenarios_file):
-    f = lambda v, spec: "n/a" if v is None else format(v, spec)
-    lines = ["# Capture benchmark", "",
-             f"Random engagements drawn by scripts/capture-benchmark (cases: {scenarios_file}); a run is a capture "
-             "when the net catches the intruder within the run.", "",
-             "| camera | runs | captured | success rate | first shot | median time to capture [s] | median aim RMSE [m] |",
-             "|---|---:|---:|---:|---:|---:|---:|"]
-    for s in summaries:
-        captured = s["runs"] - len(s["failures"])
-        lines.append(f"| {s['camera']} | {s['runs']} | {captured} | {f(s['success_rate'], '.1%')} | "
-                     f"{f(s.get('first_shot_rate'), '.1%')} | "
-                     f"{f(s['median_time_to_capture_s'], '.1f')} | {f(s['aim_rmse_m'], '.2f')} |")
-    if any("by_band" in s for s in summaries):
-        lines += ["", "## By intruder top speed", "",
-                  "Rates with their Wilson 95 % interval; first shot: the first net caught it; seen < 4 m: the target "
-                  "was first seen closer than 4 m; missed shots: lost to the intruder's manoeuvre while the net flew "
-                  "(flying straight on it would have been caught) + lost to the aim.", "",
-                  "| camera | band [m/s] | runs | captured | rate | 95 % interval | first shot | median time [s] | "
-                  "median nets | seen < 4 m | shots | missed: manoeuvre + aim |",
-                  "|---|---|---:|---:|---:|---|---:|---:|---:|---:|---:|---|"]
-        for s in summaries:
-            for b in s.get("by_band", []):
-                lines.append(f"| {s['camera']} | {b['band']} | {b['runs']} | {b['captured']} | {f(b['rate'], '.1%')} | "
-                             f"{f(b['wilson_low'], '.1%')} to {f(b['wilson_high'], '.1%')} | "
-                             f"{f(b['first_shot_rate'], '.1%')} | {f(b['median_time_to_capture_s'], '.1f')} | "
-                             f"{f(b['median_nets_used'], 'g')} | {f(b['first_seen_closer_than_4m'], '.0%')} | "
-                             f"{b['shots']} | {b['missed_by_manoeuvre']} + {b['missed_by_aim']} |")
-    if any("by_family" in s for s in summaries):
-        lines += ["", "## By behaviour family", "",
-                  "Tuning families: the aim's values were chosen on them; held-out families: never tuned on. Rates "
-                  "with their Wilson 95 % interval.", "",
-                  "| camera | family | kind | band [m/s] | runs | captured | rate | 95 % interval | first shot | "
-                  "median time [s] |", "|---|---|---|---|---:|---:|---:|---|---:|---:|"]
-        for s in summaries:
-            for family, by_band in s.get("by_family", {}).items():
-                kind = "held out" if family in s.get("families", {}).get("held_out", []) else "tuning"
-                for band, b in by_band.items():
-                    lines.append(f"| {s['camera']} | {family} | {kind} | {band} | {b['runs']} | {b['captured']} | "
-                                 f"{f(b['rate'], '.1%')} | {f(b['wilson_low'], '.1%')} to "
-                                 f"{f(b['wilson_high'], '.1%')} | {f(b['first_shot_rate'], '.1%')} | "
-                                 f"{f(b['median_time_to_capture_s'], '.1f')} |")
-    for s in summaries:
-        lines += ["", f"## {s['camera']}: by shape", "", "| shape | runs | captured |", "|---|---:|---:|"]
-        for shape, v in s["by_shape"].items():
-            lines.append(f"| {shape} | {v['runs']} | {v['captured']} |")
-        lines += ["", f"## {s['camera']}: failures", ""]
-        lines += [f"- seed {x['seed']}: {x['cause']}" for x in s["failures"]] or ["None."]
-    return "\n".join(lines) + "\n"
-
-
-def write_curve(path, laws):
-    """One row per band: its mid speed, and each law's rate with its Wilson bounds."""
-    bands = [(b["lo_m_s"], b["hi_m_s"]) for b in next(iter(laws.values()))["by_band"]]
-    with open(path, "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(["band", "speed_m_s"] + [f"{law}{suffix}" for law in laws for suffix in ("", "_low", "_high")])
-        for lo, hi in bands:
-            row = [band_label((lo, hi)), (max(lo, 0.5) + hi) / 2.0]
-            for summary in laws.values():
-                b = next(x for x in summary["by_band"] if (x["lo_m_s"], x["hi_m_s"]) == (lo, hi))
-                row += [b["rate"], b["wilson_low"], b["wilson_high"]]
-            w.writerow(row)
-
-
-def write_family_curve(path, summary):
-    """One row per band: its mid speed, and each family's rate with its Wilson bounds (blank where the
-    family flew nothing in that band)."""
-    bands = [(b["lo_m_s"], b["hi_m_s"]) for b in summary["by_band"]]
-    families = list(summary["by_family"])
-    with open(path, "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(["band", "speed_m_s"] + [f"{x}{suffix}" for x in families for suffix in ("", "_low", "_high")])
-        for band in bands:
-            row = [band_label(band), (max(band[0], 0.5) + band[1]) / 2.0]
-            for family in families:
-                b = summary["by_family"][family].get(band_label(band))
-                row += [b["rate"], b["wilson_low"], b["wilson_high"]] if b else ["", "", ""]
-            w.writerow(row)
-
-
 def main(argv):
     import argparse
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -538,11 +396,11 @@ def main(argv):
         with open(a.file, "w") as f:
             json.dump(combined, f, indent=2)
     elif a.command == "markdown":
-        sys.stdout.write(markdown([json.load(open(p)) for p in a.summaries], a.cases))
+        sys.stdout.write(capture_report.markdown([json.load(open(p)) for p in a.summaries], a.cases))
     elif a.command == "family-curve":
-        write_family_curve(a.file, json.load(open(a.summary)))
+        capture_report.write_family_curve(a.file, json.load(open(a.summary)))
     elif a.command == "curve":
-        write_curve(a.file, {law: json.load(open(path)) for law, _, path in (item.partition("=") for item in a.laws)})
+        capture_report.write_curve(a.file, {law: json.load(open(path)) for law, _, path in (item.partition("=") for item in a.laws)})
 
 
 if __name__ == "__main__":

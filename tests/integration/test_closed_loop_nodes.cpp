@@ -284,6 +284,38 @@ TEST(ClosedLoop, AFastPatrolIsCaughtWaitingBeyondTheEndOfItsLine) {
   EXPECT_EQ(waited.report.at("hunter").at("touchdowns"), 0);
 }
 
+// The aim as a planner over the target's sampled futures (guidance intercept_search, the predictor
+// imm_samples, the fire policy capture_value), no shape recogniser on: it catches the default
+// figure-8 with its first net, fired when the chance now was at least what keeping it was worth,
+// and flies the same way again for the same seed (the futures are drawn from the run's seed).
+TEST(ClosedLoop, ThePlannerOverTheFuturesCatchesAndFiresWhenNowIsWorthMoreThanLater) {
+  const std::string graph = KESTREL_SOURCE_DIR "/graphs/sim_intercept_fast.yaml";
+  const std::vector<std::string> planner = {"aim.guidance=intercept_search",
+                                            "aim.fire_policy=capture_value",
+                                            "aim.target_filter=imm",
+                                            "aim.shot_prediction=cv",
+                                            "aim.aim_at=target",
+                                            "aim.patrol_min_length_m=0",
+                                            "aim.flee_min_speed_m_s=0",
+                                            "aim.flee_calm_speed_m_s=0",
+                                            "aim.flee_fire_probability=0",
+                                            "aim.evader_guidance=hold_aim"};
+  const RunResult a = run(graph, planner, 1, 8.0), b = run(graph, planner, 1, 8.0);
+  ASSERT_EQ(a.outcome, RunOutcome::completed) << (a.errors.empty() ? "" : a.errors.front());
+  EXPECT_EQ(a.report.at("aim"), b.report.at("aim"));
+  EXPECT_EQ(a.report.at("control"), b.report.at("control"));
+  const auto& control = a.report.at("control");
+  ASSERT_TRUE(control.at("captured").get<bool>());
+  EXPECT_TRUE(control.at("first_shot_captured").get<bool>());
+  const auto& shot = a.report.at("aim").at("shots").at(0);
+  const double now = shot.at("capture_now").get<double>();
+  EXPECT_GE(now, 0.3);  // capture_value's least chance
+  if (!shot.at("later_value").is_null()) {
+    EXPECT_GE(now, shot.at("later_value").get<double>());
+  }
+  EXPECT_EQ(a.report.at("hunter").at("touchdowns"), 0);
+}
+
 // The loop with the detection-level camera: reproducible bit for bit too, and it flies the
 // random engagements of the capture benchmark (here a line that brakes at its ends, in wind).
 TEST(ClosedLoop, TheDetectionLevelLoopIsReproducibleBitForBit) {

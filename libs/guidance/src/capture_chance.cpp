@@ -23,10 +23,11 @@ CaptureChance capture_chance(const TargetFutures& futures, const net::NetModel& 
   const double spread = 2.0 * p.radius_m;
   int caught = 0;
   double closeness = 0.0;
-  const Eigen::Vector3d mean_at_launch = seen_at_launch ? futures.mean(launch.time_s) : Eigen::Vector3d::Zero();
+  // Seen at the launch: each path's offset from the mean there is known to the launch and taken out.
+  const Eigen::Vector3d mean_at = seen_at_launch ? futures.mean(launch.time_s) : Eigen::Vector3d::Zero();
   for (std::size_t i = 0; i < futures.size(); ++i) {
     Eigen::Vector3d error = i < launcher_errors.size() ? launcher_errors[i] : Eigen::Vector3d::Zero();
-    if (seen_at_launch) error += futures.position(i, launch.time_s) - mean_at_launch;
+    if (seen_at_launch) error += futures.position(i, launch.time_s) - mean_at;
     double least = INFINITY;
     for (std::size_t k = 0; k < when.size(); ++k)
       least = std::min(least, (futures.position(i, when[k]) - centre[k] - error).norm());

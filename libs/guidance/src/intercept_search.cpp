@@ -2,9 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <kestrel/vehicle/so3.hpp>
 #include <random>
 
 namespace kestrel::guidance {
+
+namespace {
+constexpr int kPathChecks = 8;  // points along a plan's path where its limits and view are checked
+}  // namespace
 
 ComponentSpec InterceptSearch::spec() {
   using C = InterceptSearchConfig;
@@ -38,6 +43,27 @@ ComponentSpec InterceptSearch::spec() {
       .describe(
           "the hunter faces its launch heading (where the net must open), but never further than this from the "
           "target's bearing: the camera keeps it in view (half its field of view, less a margin)");
+  c.param("view_half_width_deg", &C::view_half_width_deg)
+      .with_unit("deg")
+      .range(1.0, 90.0)
+      .describe(
+          "along a plan's path the target (the futures' mean) stays within this of the optical axis sideways, the "
+          "hunter facing it and tilted as the path accelerates it: half the camera's field of view, less a margin");
+  c.param("view_half_height_deg", &C::view_half_height_deg)
+      .with_unit("deg")
+      .range(1.0, 90.0)
+      .describe("the same up and down: a hard acceleration pitches the camera off a target level with it");
+  c.param("view_range_m", &C::view_range_m)
+      .with_unit("m")
+      .range(0.5, 1000.0)
+      .describe("and no farther than this from the camera (its range)");
+  c.param("min_range_m", &C::min_range_m)
+      .with_unit("m")
+      .range(0.0, 100.0)
+      .describe(
+          "nor nearer than this to the hunter along the path: the camera loses a target that close, and a hunter "
+          "that overshoots a launch it did not fire would fly into it (the launch itself is further, where the net "
+          "opens)");
   c.param("hazard_time_s", &C::hazard_time_s)
       .with_unit("s")
       .range(0.05, 1000.0)
@@ -66,7 +92,10 @@ ComponentSpec InterceptSearch::spec() {
           "where the net, fired level towards the futures' mean and inheriting the hunter's velocity (the target's "
           "mean velocity plus the closing speed along the line of sight), opens on that mean; the candidate counts "
           "when the least-jerk path (a quintic) from the hunter's reference reaches it at that velocity, level, within "
-          "acceleration_share of the acceleration limit and within the speed limit, above the least altitude. Its "
+          "acceleration_share of the acceleration limit and within the speed limit, the target (the futures' mean) "
+          "within view_half_width_deg, view_half_height_deg and view_range_m of its camera, and no nearer than "
+          "min_range_m, all along (the hunter "
+          "facing it, tilted by the path's acceleration), above the least altitude. Its "
           "chance is the share of the "
           "futures the open net holds, each counted from where it is at the launch (the hunter re-plans until then and "
           "sees the target there), the hunter off by execution_error_m + execution_error_m_s tau per path; its "
@@ -85,6 +114,20 @@ InterceptSearch::InterceptSearch(InterceptSearchConfig config) : cfg_(config) {
   std::normal_distribution<double> normal(0.0, 1.0);
   unit_errors_.resize(4096);
   for (auto& e : unit_errors_) e = Eigen::Vector3d(normal(rng), normal(rng), normal(rng));
+}
+
+bool InterceptSearch::in_view(const Eigen::Vector3d& hunter, const Eigen::Vector3d& acceleration,
+                              const Eigen::Vector3d& target, const Eigen::Vector3d& camera_offset) const {
+  const Eigen::Vector2d towards = (target - hunter).head<2>();
+  if (towards.norm() < 0.5) return false;  // right above or below
+  const Eigen::Vector3d thrust = acceleration + kGravity_m_s2 * Eigen::Vector3d::UnitZ();
+  if (thrust.z() <= 0.1 * kGravity_m_s2) return false;  // a dive no attitude holds
+  const Eigen::Quaterniond attitude(vehicle::attitude_along(thrust, std::atan2(towards.y(), towards.x())));
+  const Eigen::Vector3d seen = geometry::camera_on_body(hunter, attitude, camera_offset).to_camera(target);
+  constexpr double kDeg = M_PI / 180.0;
+  return seen.z() > 0.0 && seen.norm() <= cfg_.view_range_m &&
+         std::abs(seen.x()) <= seen.z() * std::tan(cfg_.view_half_width_deg * kDeg) &&
+         std::abs(seen.y()) <= seen.z() * std::tan(cfg_.view_half_height_deg * kDeg);
 }
 
 std::optional<LaunchPlan> InterceptSearch::candidate(const Engagement& e, double tau, double closing,
@@ -122,9 +165,13 @@ std::optional<LaunchPlan> InterceptSearch::candidate(const Engagement& e, double
   // flown may take; the reference may be accelerating harder still, and the path starts from it.
   const double share = line ? 1.0 : cfg_.acceleration_share;
   const double reach = std::max(share * e.limits.max_acceleration, e.acceleration.norm());
-  for (int k = 1; k <= 8; ++k) {
-    const double s = tau * k / 8.0;
-    if (plan.path.acceleration(s).norm() > reach || plan.path.velocity(s).norm() > e.limits.max_speed)
+  // Within the limits all along, the target in view and not too near (a plan that would lose it
+  // is not flown: the paper's aim law, which keeps it in view, takes over when none is left).
+  for (int k = 1; k <= kPathChecks; ++k) {
+    const double s = tau * k / kPathChecks;
+    const Eigen::Vector3d a = plan.path.acceleration(s), hunter = plan.path.position(s), target = futures.mean(s);
+    if (a.norm() > reach || plan.path.velocity(s).norm() > e.limits.max_speed) return std::nullopt;
+    if ((target - hunter).norm() < cfg_.min_range_m || !in_view(hunter, a, target, e.geometry.camera_offset_body))
       return std::nullopt;
   }
   const double sigma = cfg_.execution_error_m + cfg_.execution_error_m_s * tau;

@@ -84,31 +84,49 @@ TEST(InterceptSearch, HandsOverToTheTerminalPhaseWhenNoLaunchIsWithinReach) {
   EXPECT_TRUE(planner.command(blind).terminal);
 }
 
-TEST(InterceptSearch, FlownByTheReferenceItBringsACrossingTargetIntoTheNet) {
-  // A target crossing 9 m ahead at 3 m/s; the hunter at rest. Each frame the futures start from the
-  // target's true state; the reference flies the plan's command. A launch from the reference's own
-  // state (level, at its velocity) is counted every frame, until one would catch it.
+namespace {
+
+// A target crossing 9 m ahead at 3 m/s, the hunter at rest: the time until a launch from the
+// reference's own state (level, at its velocity) would catch it, with the planner's paths flown
+// (the aim law where it has none, as the aim planner does), or the aim law alone. Each frame the
+// futures start from the target's true state. `planned`: the frames flown on the planner's paths.
+double time_to_a_catching_launch(bool plan, int& planned) {
   AimReference reference({1.0, 12.0, 8.0, M_PI, M_PI / 3.0}, {0.0, 0.0, 3.0}, 0.0);
   InterceptSearch planner{InterceptSearchConfig{}};
   const double dt = 1.0 / 30.0;
-  int k = 0;
-  for (; k < 150; ++k) {
-    const Eigen::Vector3d target(9.0, -4.0 + 3.0 * k * dt, 2.5);
-    const auto futures = exactly_known(target, {0.0, 3.0, 0.0});
+  planned = 0;
+  for (int k = 0; k < 300; ++k) {
+    const Eigen::Vector3d target(9.0, -4.0 + 3.0 * k * dt, 2.5), velocity(0.0, 3.0, 0.0);
+    const auto futures = exactly_known(target, velocity);
     Engagement e = planned_engagement(reference.position(), reference.velocity(), reference.yaw(), futures);
     e.acceleration = reference.acceleration();
-    const GuidanceCommand command = planner.command(e);
-    ASSERT_FALSE(command.terminal) << "frame " << k;
-    reference.steer(command.velocity, command.yaw, dt);
+    const GuidanceCommand command = plan ? planner.command(e) : terminal_phase();
+    if (command.terminal)
+      reference.advance(aim_pose(target, reference.position(), reference.yaw(), e.geometry), velocity, dt);
+    else
+      reference.steer(command.velocity, command.yaw, dt);
+    planned += !command.terminal;
     const Launch now{
         0.0,
         geometry::camera_on_body(reference.position(),
                                  Eigen::Quaterniond(Eigen::AngleAxisd(reference.yaw(), Eigen::Vector3d::UnitZ())),
                                  {0.1, 0.0, 0.0}),
         reference.velocity()};
-    if (capture_chance(futures, kOpenNet, now).probability > 0.9) break;
+    if (capture_chance(futures, kOpenNet, now).probability > 0.9) return k * dt;
   }
-  EXPECT_LT(k * dt, 3.0);  // the launch comes within 3 s
+  return INFINITY;
+}
+
+}  // namespace
+
+TEST(InterceptSearch, FlownByTheReferenceItBringsACrossingTargetIntoTheNet) {
+  int planned = 0;
+  const double with_plan = time_to_a_catching_launch(true, planned);
+  EXPECT_LT(with_plan, 4.0);
+  EXPECT_GT(planned, 0.5 * with_plan * 30.0);  // mostly on the planner's paths
+  // The aim law alone gets there too (the planner is not yet the quicker: docs/experiments).
+  int unused = 0;
+  EXPECT_LT(time_to_a_catching_launch(false, unused), 4.0);
 }
 
 TEST(Quintic, LeavesAndArrivesAtTheStatesAskedFor) {

@@ -30,8 +30,9 @@ struct CaptureChance {
 /// The launch against every path. `launcher_errors` (none, or one per path, world metres) moves
 /// the launcher for that path: the hunter's error in flying to the launch point.
 /// `seen_at_launch`: a launch later than now is aimed then, with the target seen where it is: each
-/// path counts from where it is at the launch (moved by its offset from the paths' mean there), so
-/// only what it does while the net flies can make it escape. False: the launch is aimed now, on
+/// path counts from where it is at the launch (its offset from the paths' mean there taken out), so
+/// only how it moves on can make it escape. (Taking its velocity's offset out as well made the
+/// planner bolder and the engagements worse: docs/experiments.) False: the launch is aimed now, on
 /// where the paths are expected (a shot now, or a launch committed to now).
 CaptureChance capture_chance(const TargetFutures& futures, const net::NetModel& net, const Launch& launch,
                              const std::vector<Eigen::Vector3d>& launcher_errors = {}, bool seen_at_launch = false);

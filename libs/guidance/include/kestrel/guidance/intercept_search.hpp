@@ -3,12 +3,12 @@
 // searches launch times within its horizon and closing speeds along the line of sight; for each
 // it places the launch where the net, inheriting the hunter's velocity, opens on the futures' mean,
 // checks that the hunter reaches that point at that velocity, level, within its limits (the
-// least-jerk path from its state), and counts the share of the futures the open net would hold, the hunter's own error
-// in getting there drawn per path. It flies the best candidate, its chance discounted for the wait, towards its launch
-// point, and reports that value for the fire policy to weigh a shot now against. The launch it flies is kept, its time
-// counting down, while it is worth nearly as much as the best new one: a plan chosen afresh every frame would never
-// arrive (its first acceleration is the path's gentlest). Nothing in it is keyed to a kind of flight: a turn, a stop or
-// a dash is in the futures.
+// least-jerk path from its state) and with the target in the camera's view all along, and counts the share of the
+// futures the open net would hold, the hunter's own error in getting there drawn per path. It flies the best candidate,
+// its chance discounted for the wait, towards its launch point, and reports that value for the fire policy to weigh a
+// shot now against. The launch it flies is kept, its time counting down, while it is worth nearly as much as the best
+// new one: a plan chosen afresh every frame would never arrive (its first acceleration is the path's gentlest). Nothing
+// in it is keyed to a kind of flight: a turn, a stop or a dash is in the futures.
 #include <Eigen/Core>
 #include <vector>
 
@@ -30,6 +30,10 @@ struct InterceptSearchConfig {
   double execution_error_m = 0.15;     ///< the hunter's error at a launch planned for now
   double execution_error_m_s = 0.05;   ///< and its growth per second of plan
   double max_look_away_deg = 35.0;     ///< the heading stays this near the target's bearing
+  double view_half_width_deg = 40.0;   ///< the target stays this near the optical axis, sideways,
+  double view_half_height_deg = 32.0;  ///< and up or down, along the path (the camera's view less a margin)
+  double view_range_m = 14.0;          ///< and no farther
+  double min_range_m = 1.8;            ///< nor nearer: the camera loses it, and the hunter may hit it
   double hazard_time_s = 2.0;          ///< a launch tau later is worth exp(-tau / this) as much
   double gain_1_s = 1.5;               ///< pull towards a launch point planned within min_plan_s
   double min_plan_s = 0.3;             ///< nearer launches are held, not flown to on a path
@@ -65,6 +69,10 @@ class InterceptSearch final : public Guidance {
   /// plan; given: the launch already flown, which may use the whole acceleration limit).
   std::optional<LaunchPlan> candidate(const Engagement& e, double tau, double closing,
                                       const std::optional<Eigen::Vector2d>& line = std::nullopt) const;
+
+  /// Whether a hunter at `hunter`, accelerating so and facing the target, sees it in its camera.
+  bool in_view(const Eigen::Vector3d& hunter, const Eigen::Vector3d& acceleration, const Eigen::Vector3d& target,
+               const Eigen::Vector3d& camera_offset) const;
 
   InterceptSearchConfig cfg_;
   std::vector<Eigen::Vector3d> unit_errors_;  // standard normal draws, one per path
