@@ -620,7 +620,7 @@ class AimPlannerNode final : public Node {
     std::optional<double> miss, probability, spread;
     std::optional<PredictedShot> shot;
     std::optional<ShotUncertainty> uncertainty;
-    double capture_now = 0.0;
+    std::optional<double> capture_now;  // on the futures, when they are drawn
     // An evader stays one through its estimate's restarts (it breaks out of view, and is found again
     // by the search), until nothing has been seen for flee_forget_s.
     if ((flee_.fleeing() || flee_.own_path()) && t - last_seen_ > cfg_.flee_forget_s) flee_.reset();
@@ -665,7 +665,9 @@ class AimPlannerNode final : public Node {
         estimate_->update(intruder);
       }
       if (oscillation_) oscillation_->add(t, intruder);
-      futures_ = predictor_->predict(estimate_->hypotheses());
+      // The futures only where a component reads them: each frame's draw costs about a millisecond.
+      if (guidance_->needs_futures() || evader_guidance_->needs_futures() || fire_policy_->needs_futures())
+        futures_ = predictor_->predict(estimate_->hypotheses());
       const Eigen::VectorXd x = estimate_->state();
       // A patrol flies its own line, away from the hunter waiting at its end as often as towards it.
       if (cfg_.flee_min_speed_m_s > 0.0 && !patrol_found()) {
@@ -719,8 +721,9 @@ class AimPlannerNode final : public Node {
       // Every frame only when it decides the shot; otherwise once, for the shot's record.
       if (cfg_.fire_probability > 0.0) probability = hit_probability(*shot, *uncertainty, cfg_.net_radius_m);
       // The same launch counted on the futures (from the estimate's time: the launch is `lead` later).
-      capture_now =
-          guidance::capture_chance(futures_, open_net_, guidance::Launch{lead, launch, hunter->velocity}).probability;
+      if (!futures_.empty())
+        capture_now =
+            guidance::capture_chance(futures_, open_net_, guidance::Launch{lead, launch, hunter->velocity}).probability;
     }
 
     if (goal_ && target) {
@@ -784,7 +787,7 @@ class AimPlannerNode final : public Node {
 
     const bool trusted = spread && (cfg_.max_shot_spread_m <= 0.0 || *spread <= cfg_.max_shot_spread_m);
     const auto launcher = ctx.get(kLauncher);
-    const FireChances chances{worth_a_net(ctx, miss, probability), capture_now, later_value_,
+    const FireChances chances{worth_a_net(ctx, miss, probability), capture_now.value_or(0.0), later_value_,
                               launcher ? static_cast<int>(launcher->nets_left) : -1};
     if (fire_.decide(t, launcher_ready(ctx, t) && trusted && target && fire_policy_->worth_a_net(chances))) {
       ++fire_count_;
@@ -797,7 +800,7 @@ class AimPlannerNode final : public Node {
                             {"predicted_miss_m", *miss},
                             {"probability", probability ? nlohmann::json(*probability) : nlohmann::json()},
                             {"spread_m", *spread},
-                            {"capture_now", capture_now},
+                            {"capture_now", capture_now ? nlohmann::json(*capture_now) : nlohmann::json()},
                             {"later_value", later_value_ ? nlohmann::json(*later_value_) : nlohmann::json()},
                             {"predicted_time_s", shot->time_s},
                             {"estimate_age_s", t - estimate_since_},

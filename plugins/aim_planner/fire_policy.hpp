@@ -31,6 +31,8 @@ class FirePolicy {
   static constexpr std::string_view kKind = "fire_policy";
   virtual ~FirePolicy() = default;
   virtual bool worth_a_net(const FireChances& chances) const = 0;
+  /// Whether the policy reads the chance now on the target's futures (the aim draws them only then).
+  virtual bool needs_futures() const { return false; }
 };
 
 class ThresholdFire final : public FirePolicy {
@@ -52,6 +54,7 @@ class CaptureValue final : public FirePolicy {
   explicit CaptureValue(const ComponentInit& init);
   explicit CaptureValue(CaptureValueConfig config) : cfg_(config) {}
   bool worth_a_net(const FireChances& chances) const override;
+  bool needs_futures() const override { return true; }
 
  private:
   CaptureValueConfig cfg_;

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <kestrel/guidance/aim_reference.hpp>
+#include <kestrel/guidance/hold_aim.hpp>
 #include <kestrel/guidance/intercept_search.hpp>
 
 using namespace kestrel;
@@ -68,6 +69,11 @@ TEST(InterceptSearch, PlansALaunchThatHoldsAHoveringTargetAndClosesOnIt) {
   unsure.command(planned_engagement({0.0, 0.0, 3.0}, Eigen::Vector3d::Zero(), 0.0, futures));
   ASSERT_TRUE(unsure.plan());
   EXPECT_LT(unsure.plan()->chance.probability, planner.plan()->chance.probability);
+}
+
+TEST(InterceptSearch, IsTheLawThatReadsTheFutures) {
+  EXPECT_TRUE(InterceptSearch{InterceptSearchConfig{}}.needs_futures());
+  EXPECT_FALSE(HoldAim().needs_futures());  // the aim draws none for the paper's law
 }
 
 TEST(InterceptSearch, HandsOverToTheTerminalPhaseWhenNoLaunchIsWithinReach) {

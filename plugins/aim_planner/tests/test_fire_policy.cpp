@@ -9,6 +9,8 @@ TEST(FirePolicy, ThresholdFiresOnTheAimsOwnVerdictOnly) {
   const ThresholdFire policy;
   EXPECT_TRUE(policy.worth_a_net({true, 0.0, 1.0, 2}));
   EXPECT_FALSE(policy.worth_a_net({false, 1.0, 0.0, 2}));
+  EXPECT_FALSE(policy.needs_futures());  // the aim draws no futures for it
+  EXPECT_TRUE(CaptureValue(CaptureValueConfig{}).needs_futures());
 }
 
 TEST(FirePolicy, CaptureValueFiresWhenNowIsWorthAtLeastWaiting) {

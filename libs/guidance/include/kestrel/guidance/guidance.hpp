@@ -66,6 +66,8 @@ class Guidance {
   static constexpr std::string_view kKind = "guidance";
   virtual ~Guidance() = default;
   virtual GuidanceCommand command(const Engagement& engagement) = 0;
+  /// Whether the law reads the target's sampled futures (the aim draws them only then).
+  virtual bool needs_futures() const { return false; }
   /// A new target is engaged: forget what was learnt about the last one.
   virtual void reset() {}
 };

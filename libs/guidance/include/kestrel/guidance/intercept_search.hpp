@@ -60,6 +60,7 @@ class InterceptSearch final : public Guidance {
   explicit InterceptSearch(const ComponentInit& init);
   explicit InterceptSearch(InterceptSearchConfig config);
   GuidanceCommand command(const Engagement& e) override;
+  bool needs_futures() const override { return true; }
   /// The best candidate of the last command, if any was reachable.
   const std::optional<LaunchPlan>& plan() const { return plan_; }
   void reset() override { plan_.reset(); }
