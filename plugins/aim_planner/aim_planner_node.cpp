@@ -5,7 +5,9 @@
 // seen fleeing the hunter (an evader, flee_watch.hpp) is flown by a second one, evader_guidance. Takes off to
 // takeoff_altitude_m and waits while nothing is tracked; after losing the target it flies on towards where it was for
 // target_timeout_s, then holds (or searches by turning slowly) until the tracker selects a target again. A selected
-// track near the ground is clutter, never a target.
+// track near the ground is clutter, never a target. Two more components: the predictor draws the target's futures
+// from its estimate when a component reads them (guidance intercept_search, a planner over them), and the fire policy
+// decides whether a shot is worth a net (the aim's thresholds, or a capture now against the planner's later value).
 #include <fmt/format.h>
 
 #include <Eigen/Eigenvalues>
