@@ -92,13 +92,6 @@ def parse_distance(text):
     return lo, hi
 
 
-def family_of(params):
-    """A run's behaviour family, from its intruder's parameters."""
-    if params.get("shape") != "file":
-        return params.get("shape", "?")
-    return "agile" if os.path.basename(str(params.get("file", ""))).startswith("agile_") else "recorded"
-
-
 def scenario(seed, band=(0.0, MAX_INTRUDER_SPEED), shapes=SHAPES, distance_range=DISTANCE, flights_dir="flights"):
     rng = random.Random(seed * 7919 + 17)
     shape = shapes[(seed - 1) % len(shapes)]  # each shape (family) as often as the others
@@ -292,7 +285,7 @@ def summarise(out, label, sweep_dirs, bands=None, seed0=1):
             nodes = r["graph"]["resolved"]["nodes"]
             shape = nodes["intruder"]["params"]["shape"]
             guidance = nodes.get("aim", {}).get("params", {}).get("guidance")
-            runs.append({"seed": seed, "shape": shape, "family": family_of(nodes["intruder"]["params"]),
+            runs.append({"seed": seed, "shape": shape, "family": held_out_families.family_of(nodes["intruder"]["params"]),
                          "captured": c.get("captured") is True,
                          "guidance": guidance.get("type") if isinstance(guidance, dict) else guidance,
                          "first_shot_captured": c.get("first_shot_captured") is True,

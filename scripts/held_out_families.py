@@ -9,6 +9,7 @@
 Both are played by the intruder's `shape: file`, held at their end.
 """
 import csv
+import functools
 import math
 import os
 
@@ -18,6 +19,7 @@ RECORDED_FLIGHTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 AGILE_DURATION_S = 60.0  # longer than any engagement the benchmark flies by default
 
 
+@functools.cache  # read once per benchmark, not once per engagement
 def recorded_flights(folder=RECORDED_FLIGHTS):
     """The recorded flights: each file's path, its top speed (m/s, over 0.5 s) and its extent."""
     flights = []
@@ -76,3 +78,11 @@ def scenario(s, family, seed, rng, band, flights_dir, vec):
     s.update({"intruder.file": flight["path"], "intruder.file_offset_m": vec(offset),
               "intruder.file_yaw_deg": f"{math.degrees(yaw):.2f}", "intruder.file_time_scale": f"{scale:.4f}"})
     return s
+
+
+def family_of(params):
+    """A run's behaviour family, from its intruder's parameters: its shape, or for a flight file,
+    agile (the files scenario() writes) or recorded."""
+    if params.get("shape") != "file":
+        return params.get("shape", "?")
+    return "agile" if os.path.basename(str(params.get("file", ""))).startswith("agile_") else "recorded"
