@@ -1,5 +1,6 @@
 // The components the aim planner ships: its guidance laws (kestrel/guidance/*.hpp), the
-// predictor of the target's futures and the fire policies; a plugin can register more.
+// predictor of the target's futures, the fire policies and the searches for a lost target; a
+// plugin can register more.
 #include <kestrel/guidance/fast_response_pn.hpp>
 #include <kestrel/guidance/hold_aim.hpp>
 #include <kestrel/guidance/intercept_search.hpp>
@@ -11,6 +12,7 @@
 #include <kestrel/plugin.hpp>
 
 #include "fire_policy.hpp"
+#include "search.hpp"
 
 KESTREL_REGISTER_COMPONENT(kestrel::guidance::Guidance, kestrel::guidance::HoldAim)
 KESTREL_REGISTER_COMPONENT(kestrel::guidance::Guidance, kestrel::guidance::Pursuit)
@@ -22,3 +24,6 @@ KESTREL_REGISTER_COMPONENT(kestrel::guidance::Guidance, kestrel::guidance::Inter
 KESTREL_REGISTER_COMPONENT(kestrel::guidance::Predictor, kestrel::guidance::ImmSamples)
 KESTREL_REGISTER_COMPONENT(kestrel::aim::FirePolicy, kestrel::aim::ThresholdFire)
 KESTREL_REGISTER_COMPONENT(kestrel::aim::FirePolicy, kestrel::aim::CaptureValue)
+KESTREL_REGISTER_COMPONENT(kestrel::aim::Search, kestrel::aim::HoldSearch)
+KESTREL_REGISTER_COMPONENT(kestrel::aim::Search, kestrel::aim::TurnSearch)
+KESTREL_REGISTER_COMPONENT(kestrel::aim::Search, kestrel::aim::BackOffSearch)

@@ -95,7 +95,7 @@ TEST(ClosedLoop, TheInterceptionIsReproducibleBitForBit) {
 namespace {
 
 // `sets`: overrides of the graph's parameters; `searches`: whether the hunter is to turn to search
-// during the blackout (aim.back_off_search_after_s); `duration_s`: time for the capture after the
+// during the blackout (aim.search.turn_after_s); `duration_s`: time for the capture after the
 // blackout, and the hold once the intruder is caught.
 void expect_a_blackout_to_make_the_hunter_hold_then_reacquire(const std::string& graph,
                                                               const std::vector<std::string>& sets, bool searches,
@@ -149,8 +149,8 @@ TEST(ClosedLoop, ABlackoutMakesTheHunterHoldThenReacquire) {
 TEST(ClosedLoop, ABlackoutOfTheDetectionLevelCameraMakesTheHunterHoldThenReacquire) {
   // Turning to search 0.5 s after the back-off begins: the intruder is found again all the same.
   // The first net after the blackout misses (5.1 s), the second catches at 8.5 s.
-  expect_a_blackout_to_make_the_hunter_hold_then_reacquire("sim_intercept_fast", {"aim.back_off_search_after_s=0.5"},
-                                                           true, 12.0);
+  expect_a_blackout_to_make_the_hunter_hold_then_reacquire("sim_intercept_fast", {"aim.search.turn_after_s=0.5"}, true,
+                                                           12.0);
 }
 
 // An intruder that flees the hunter at 9.9 m/s (an engagement of the capture benchmark's evade set):

@@ -40,4 +40,18 @@ CaptureChance capture_chance(const TargetFutures& futures, const net::NetModel& 
   return chance;
 }
 
+CaptureChance capture_chance(const TargetFutures& futures, const net::NetModel& net, const Launch& launch,
+                             const ReactingTarget& reacting, const std::vector<Eigen::Vector3d>& launcher_errors,
+                             bool seen_at_launch) {
+  const CaptureChance own = capture_chance(futures, net, launch, launcher_errors, seen_at_launch);
+  const double w = reacting.probability;
+  if (w <= 0.0 || !reacting.config || !reacting.hunter) return own;
+  constexpr std::size_t kStride = 4;  // a quarter of the paths react: the cost is per candidate launch
+  const TargetFutures fleeing = reacting_futures(futures, *reacting.config, reacting.hunter, kStride);
+  std::vector<Eigen::Vector3d> errors;
+  for (std::size_t i = 0; i < launcher_errors.size(); i += kStride) errors.push_back(launcher_errors[i]);
+  const CaptureChance fled = capture_chance(fleeing, net, launch, errors, seen_at_launch);
+  return {(1.0 - w) * own.probability + w * fled.probability, (1.0 - w) * own.closeness + w * fled.closeness};
+}
+
 }  // namespace kestrel::guidance

@@ -181,7 +181,13 @@ std::optional<LaunchPlan> InterceptSearch::candidate(const Engagement& e, double
       geometry::camera_on_body(plan.point, Eigen::Quaterniond(Eigen::AngleAxisd(plan.yaw, Eigen::Vector3d::UnitZ())),
                                e.geometry.camera_offset_body);
   // The hunter re-plans until the launch: the target is seen where it is then.
-  plan.chance = capture_chance(futures, *e.net, Launch{tau, launcher, plan.velocity}, errors, true);
+  // A target that reacts flees the hunter along this path, then from the launch on.
+  ReactingTarget reacting;
+  if (e.reaction && e.reaction->probability() > 0.0)
+    reacting = {e.reaction->probability(), &e.reaction->config(), [&plan, tau](double s) {
+                  return s <= tau ? plan.path.position(s) : Eigen::Vector3d(plan.point + plan.velocity * (s - tau));
+                }};
+  plan.chance = capture_chance(futures, *e.net, Launch{tau, launcher, plan.velocity}, reacting, errors, true);
   plan.value = plan.chance.probability * std::exp(-tau / cfg_.hazard_time_s);
   return plan;
 }

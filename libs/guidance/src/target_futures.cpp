@@ -56,6 +56,45 @@ ComponentSpec ImmSamples::spec() {
       .with_unit("m/s^2")
       .range(0.1, 100.0)
       .describe("no path accelerates harder");
+  using R = ReactionConfig;
+  c.param("reaction_prior", &C::reaction, &R::prior)
+      .range(0.0, 1.0)
+      .describe(
+          "the weight of the hypothesis that the target reacts to the hunter (flies away from it within "
+          "reaction_radius_m) before the sightings say; 0: no such hypothesis");
+  c.param("reaction_radius_m", &C::reaction, &R::radius_m)
+      .with_unit("m")
+      .range(0.0, 100.0)
+      .describe("a reacting target flies away from a hunter this near");
+  c.param("reaction_speed_m_s", &C::reaction, &R::speed_m_s)
+      .with_unit("m/s")
+      .range(0.0, 100.0)
+      .describe("at this speed at least (its own, if faster), straight away from the hunter");
+  c.param("reaction_acceleration_m_s2", &C::reaction, &R::acceleration_m_s2)
+      .with_unit("m/s^2")
+      .range(0.1, 100.0)
+      .describe("accelerating no harder than this");
+  c.param("reaction_response_s", &C::reaction, &R::response_s)
+      .with_unit("s")
+      .range(0.01, 10.0)
+      .describe("its velocity's time constant towards the flight away (a multirotor's response)");
+  c.param("reaction_evidence_m_s2", &C::reaction, &R::evidence_m_s2)
+      .with_unit("m/s^2")
+      .range(0.01, 100.0)
+      .describe(
+          "the noise of the estimate's acceleration, against which the flight away and no acceleration are scored "
+          "each frame the hunter is within the radius");
+  c.param("reaction_evidence_time_s", &C::reaction, &R::evidence_time_s)
+      .with_unit("s")
+      .range(0.01, 100.0)
+      .describe("this long of frames counts as one observation (the estimate's frames are not independent)");
+  c.param("reaction_memory_s", &C::reaction, &R::memory_s)
+      .with_unit("s")
+      .range(0.1, 3600.0)
+      .describe("the evidence fades towards the prior with this time constant: a target may change its ways");
+  c.param("reaction_max_probability", &C::reaction, &R::max_probability)
+      .range(0.5, 1.0)
+      .describe("neither hypothesis is ever surer than this");
   c.rule("step_s < horizon_s", {"step_s", "horizon_s"}, [](const C& k) { return k.step_s < k.horizon_s; });
   return ComponentSpec("imm_samples", "The target's futures, sampled from each model of its estimate")
       .details(
@@ -64,7 +103,10 @@ ComponentSpec ImmSamples::spec() {
           "proportion to its probability, each starting from a draw of that model's state (mean and covariance) and "
           "integrated every step_s with the model's transition and its white-noise manoeuvre (q_*), speed and "
           "acceleration clipped to max_speed_m_s and max_acceleration_m_s2. The planner chooses where and when to "
-          "launch from these paths, and the fire policy weighs a shot now against one later on the same paths.")
+          "launch from these paths, and the fire policy weighs a shot now against one later on the same paths. With "
+          "reaction_prior above 0, the target may also react to the hunter: within reaction_radius_m it flies away "
+          "from it; the chance of a launch counts the futures both ways, the reacting ones flown against the "
+          "hunter's own path, weighed by how well each hypothesis explains the accelerations seen near the hunter.")
       .config(std::move(c));
 }
 
@@ -149,6 +191,10 @@ TargetFutures ImmSamples::predict(const std::vector<MotionHypothesis>& hypothese
     }
   }
   return futures;
+}
+
+void ImmSamples::observe(double dt, const tracking::State& target, const Eigen::Vector3d& hunter) {
+  belief_.observe(dt, target.head<3>(), target.segment<3>(3), target.segment<3>(6), hunter);
 }
 
 }  // namespace kestrel::guidance

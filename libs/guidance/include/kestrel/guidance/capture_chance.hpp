@@ -7,6 +7,7 @@
 #include <kestrel/geometry/frames.hpp>
 #include <vector>
 
+#include "kestrel/guidance/reaction.hpp"
 #include "kestrel/guidance/target_futures.hpp"
 #include "kestrel/net/net_model.hpp"
 
@@ -36,5 +37,19 @@ struct CaptureChance {
 /// where the paths are expected (a shot now, or a launch committed to now).
 CaptureChance capture_chance(const TargetFutures& futures, const net::NetModel& net, const Launch& launch,
                              const std::vector<Eigen::Vector3d>& launcher_errors = {}, bool seen_at_launch = false);
+
+/// The hypothesis that the target reacts to the hunter (reaction.hpp), for a launch's chance: its
+/// weight, its model, and where the hunter flies until and after the launch.
+struct ReactingTarget {
+  double probability = 0.0;
+  const ReactionConfig* config = nullptr;
+  HunterPath hunter;
+};
+
+/// The chance over both hypotheses: the futures as drawn, and as they would be reacting to the
+/// hunter's path, weighed by the reacting hypothesis's probability.
+CaptureChance capture_chance(const TargetFutures& futures, const net::NetModel& net, const Launch& launch,
+                             const ReactingTarget& reacting, const std::vector<Eigen::Vector3d>& launcher_errors = {},
+                             bool seen_at_launch = false);
 
 }  // namespace kestrel::guidance

@@ -48,6 +48,8 @@ struct Engagement {
   const TargetFutures* futures = nullptr;
   /// The launcher's net (none: as for the futures).
   const net::NetModel* net = nullptr;
+  /// The hypothesis that the target reacts to the hunter (none: it does not).
+  const ReactionBelief* reaction = nullptr;
 };
 
 /// A law's answer: the reference's wanted velocity (limited by the reference) and heading, or

@@ -17,6 +17,7 @@
 
 #include "kestrel/component.hpp"
 #include "kestrel/config_spec.hpp"
+#include "kestrel/guidance/reaction.hpp"
 #include "kestrel/node_spec.hpp"
 #include "kestrel/tracking/constant_acceleration.hpp"
 #include "kestrel/tracking/motion_models.hpp"
@@ -57,6 +58,7 @@ struct FuturesConfig {
   double q_turn = 10.0;          ///< m^2/s^5: the coordinated turn's white-noise jerk
   double max_speed_m_s = 20.0;
   double max_acceleration_m_s2 = 12.0;
+  ReactionConfig reaction;  ///< the hypothesis that it reacts to the hunter (prior 0: none)
 };
 
 /// The component of kind "predictor" that draws the futures.
@@ -66,6 +68,13 @@ class Predictor {
   virtual ~Predictor() = default;
   /// Paths from the estimate's hypotheses (their probabilities need not sum to 1).
   virtual TargetFutures predict(const std::vector<MotionHypothesis>& hypotheses) = 0;
+  /// One frame of the estimate ([p v a], world) with the hunter at `hunter`: what the predictor
+  /// learns of how the target behaves towards it.
+  virtual void observe(double /*dt*/, const tracking::State& /*target*/, const Eigen::Vector3d& /*hunter*/) {}
+  /// The hypothesis that the target reacts to the hunter, if the predictor holds one.
+  virtual const ReactionBelief* reaction() const { return nullptr; }
+  /// A new target: forget what was learnt of the last.
+  virtual void reset() {}
 };
 
 /// `imm_samples`: paths drawn per model, in proportion to its probability (at least one path for a
@@ -78,6 +87,9 @@ class ImmSamples final : public Predictor {
   explicit ImmSamples(const ComponentInit& init);
   ImmSamples(FuturesConfig config, std::uint64_t seed);
   TargetFutures predict(const std::vector<MotionHypothesis>& hypotheses) override;
+  void observe(double dt, const tracking::State& target, const Eigen::Vector3d& hunter) override;
+  const ReactionBelief* reaction() const override { return cfg_.reaction.prior > 0.0 ? &belief_ : nullptr; }
+  void reset() override { belief_.reset(); }
   const FuturesConfig& config() const { return cfg_; }
 
  private:
@@ -86,6 +98,7 @@ class ImmSamples final : public Predictor {
   FuturesConfig cfg_;
   std::mt19937_64 rng_;
   std::normal_distribution<double> normal_{0.0, 1.0};
+  ReactionBelief belief_{cfg_.reaction};
 };
 
 }  // namespace kestrel::guidance
