@@ -296,6 +296,7 @@ def summarise(out, label, sweep_dirs, bands=None, seed0=1):
                          "shots": [{k: v for k, v in s.items() if k != "prediction"}
                                    for s in paired_shots(c.get("shots", []), r.get("aim", {}).get("shots", []))],
                          "net_radius_m": nodes.get("net", {}).get("params", {}).get("radius_m", 0.6),
+                         "futures_calibration": r.get("aim", {}).get("futures_calibration") or {},
                          "cause": None if c.get("captured") else failure_cause(r)})
     runs.sort(key=lambda x: x["seed"])
     caught = [x for x in runs if x["captured"]]
@@ -329,10 +330,36 @@ def summarise(out, label, sweep_dirs, bands=None, seed0=1):
     summary["by_family"] = {f: {b: group_figures(group) for b in band_order
                                 if (group := [x for x in runs if x["family"] == f and x["band"] == b])}
                             for f in families}
+    if any(sightings_ranked(x) for x in runs):
+        summary["futures_calibration"] = {f: futures_calibration([x for x in runs if x["family"] == f])
+                                          for f in families}
     os.makedirs(out, exist_ok=True)
     with open(os.path.join(out, "capture.json"), "w") as f:
         json.dump(summary, f, indent=2)
     return summary
+
+
+def sightings_ranked(run):
+    return sum(t.get("sightings", 0) for t in run.get("futures_calibration", {}).values())
+
+
+def futures_calibration(runs):
+    """The aim's futures against the sightings they foresaw, summed over runs: per look-ahead, the
+    share of sightings within the paths' central half and central 90 % (0.5 and 0.9 when the
+    predictor's manoeuvre noise is right; fewer: too small; more: too large)."""
+    out = {}
+    for x in runs:
+        for tau, t in x.get("futures_calibration", {}).items():
+            o = out.setdefault(tau, {"sightings": 0, "within_half": 0, "within_90": 0, "rank_sum": 0.0})
+            o["sightings"] += t["sightings"]
+            o["within_half"] += t["within_half"]
+            o["within_90"] += t["within_90"]
+            o["rank_sum"] += (t["mean_rank"] or 0.0) * t["sightings"]
+    return {tau: {"sightings": o["sightings"],
+                  "within_half": o["within_half"] / o["sightings"] if o["sightings"] else None,
+                  "within_90": o["within_90"] / o["sightings"] if o["sightings"] else None,
+                  "mean_rank": o["rank_sum"] / o["sightings"] if o["sightings"] else None}
+            for tau, o in sorted(out.items(), key=lambda kv: float(kv[0]))}
 
 
 def main(argv):

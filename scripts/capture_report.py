@@ -49,6 +49,17 @@ def markdown(summaries, scenarios_file):
                                  f"{f(b['rate'], '.1%')} | {f(b['wilson_low'], '.1%')} to "
                                  f"{f(b['wilson_high'], '.1%')} | {f(b['first_shot_rate'], '.1%')} | "
                                  f"{f(b['median_time_to_capture_s'], '.1f')} |")
+    if any("futures_calibration" in s for s in summaries):
+        lines += ["", "## The target's futures against the sightings", "",
+                  "Each sighting ranked among the paths the aim drew tau seconds before it: the share within their "
+                  "central half and central 90 % is 50 % and 90 % when the predictor's manoeuvre noise is right "
+                  "(fewer: too small; more: too large).", "",
+                  "| camera | family | tau [s] | sightings | within the half | within 90 % |", "|---|---|---:|---:|---:|---:|"]
+        for s in summaries:
+            for family, by_tau in s.get("futures_calibration", {}).items():
+                for tau, t in by_tau.items():
+                    lines.append(f"| {s['camera']} | {family} | {tau} | {t['sightings']} | "
+                                 f"{f(t['within_half'], '.1%')} | {f(t['within_90'], '.1%')} |")
     for s in summaries:
         lines += ["", f"## {s['camera']}: by shape", "", "| shape | runs | captured |", "|---|---:|---:|"]
         for shape, v in s["by_shape"].items():

@@ -230,6 +230,7 @@ void AimPlannerNode::finish(Context& ctx) {
               .metric("aim_rmse_m", rmse, "m", Better::lower)
               .quantity("fire_count", fire_count_)
               .quantity("shots", shots_)
+              .quantity("futures_calibration", calibration_.report())
               .metric("time_to_first_fire_s", first, "s", Better::lower)
               .metric("holds", holds_, "", Better::lower)
               .quantity("ground_frames", ground_frames_)

@@ -18,6 +18,7 @@
 #include <Eigen/Core>
 #include <kestrel/geometry/frames.hpp>
 #include <kestrel/guidance/aim_reference.hpp>
+#include <kestrel/guidance/futures_calibration.hpp>
 #include <kestrel/guidance/guidance.hpp>
 #include <kestrel/guidance/target_futures.hpp>
 #include <kestrel/messages/net_fire.hpp>
@@ -123,9 +124,10 @@ class AimPlannerNode final : public Node {
   std::shared_ptr<guidance::Predictor> predictor_;
   std::shared_ptr<FirePolicy> fire_policy_;
   std::shared_ptr<Search> search_;
-  guidance::TargetFutures futures_;    // this frame's, from the estimate's time
-  std::optional<double> later_value_;  // the planner's best later launch, discounted
-  AimPose takeoff_, lookout_;          // the take-off pose; ahead of it, where the first target is looked for
+  guidance::TargetFutures futures_;           // this frame's, from the estimate's time
+  guidance::FuturesCalibration calibration_;  // how well the futures foresaw the sightings
+  std::optional<double> later_value_;         // the planner's best later launch, discounted
+  AimPose takeoff_, lookout_;                 // the take-off pose; ahead of it, where the first target is looked for
   Eigen::Vector3d last_target_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d last_target_velocity_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d tilt_acceleration_ = Eigen::Vector3d::Zero();  // aim_tilt target: the low-passed estimate

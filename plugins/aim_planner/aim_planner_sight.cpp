@@ -31,6 +31,7 @@ FrameShot AimPlannerNode::sight(Context& ctx, const msg::Track& target, const ms
       oscillation_.emplace(OscillationConfig{cfg_.oscillation_window_s, cfg_.oscillation_min_omega_rad_s,
                                              cfg_.oscillation_max_omega_rad_s, cfg_.oscillation_min_improvement});
     estimate_since_ = t;
+    calibration_.forget();
     guidance_->reset();
     evader_guidance_->reset();
     motion_axis_.reset();
@@ -41,8 +42,10 @@ FrameShot AimPlannerNode::sight(Context& ctx, const msg::Track& target, const ms
   if (oscillation_) oscillation_->add(t, intruder);
   // The futures only where a component reads them: each frame's draw costs about a millisecond.
   if (guidance_->needs_futures() || evader_guidance_->needs_futures() || fire_policy_->needs_futures()) {
+    calibration_.observe(t, intruder);  // how well the futures drawn before foresaw this sighting
     predictor_->observe(dt, estimate_->state(), hunter.position);
     futures_ = predictor_->predict(estimate_->hypotheses());
+    calibration_.add(t, futures_);
   }
   const Eigen::VectorXd x = estimate_->state();
   // A patrol flies its own line, away from the hunter waiting at its end as often as towards it.

@@ -39,15 +39,19 @@ double ReactionBelief::probability() const {
 }
 
 void ReactionBelief::observe(double dt, const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
-                             const Eigen::Vector3d& acceleration, const Eigen::Vector3d& hunter) {
+                             const Eigen::Vector3d& hunter) {
   if (cfg_.prior <= 0.0 || dt <= 0.0) return;
   const double prior = logit(std::clamp(cfg_.prior, 1.0 - cfg_.max_probability, cfg_.max_probability));
   log_odds_ = prior + (log_odds_ - prior) * std::exp(-dt / cfg_.memory_s);
-  if ((position - hunter).norm() < cfg_.radius_m) {
-    // Gaussian likelihoods of the acceleration seen: about the flight away, or about none.
-    const Eigen::Vector3d reacting = reaction_acceleration(cfg_, position, velocity, hunter);
-    const double sigma2 = cfg_.evidence_m_s2 * cfg_.evidence_m_s2;
-    const double ratio = (acceleration.squaredNorm() - (acceleration - reacting).squaredNorm()) / (2.0 * sigma2);
+  const Eigen::Vector3d away = position - hunter;
+  const double range = away.norm();
+  if (range < cfg_.radius_m && range > 1e-6) {
+    // How much it moves away: the cosine of its heading off the line from the hunter, a slow
+    // target's counted at the least speed a reacting one flies (hovering is not fleeing).
+    const double along = std::clamp(velocity.dot(away / range) / std::max(velocity.norm(), cfg_.speed_m_s), -1.0, 1.0);
+    // Reacting: density k exp(k (c - 1)) / (1 - exp(-2k)) on [-1, 1]; not: 1/2 (any direction).
+    const double k = cfg_.concentration;
+    const double ratio = std::log(2.0 * k / (1.0 - std::exp(-2.0 * k))) + k * (along - 1.0);
     log_odds_ += dt / cfg_.evidence_time_s * ratio;
   }
   const double most = logit(cfg_.max_probability);

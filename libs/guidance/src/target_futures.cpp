@@ -48,6 +48,12 @@ ComponentSpec ImmSamples::spec() {
       .with_unit("m^2/s^5")
       .range(0.0, 1e6)
       .describe("the coordinated turn's paths: white-noise jerk intensity");
+  c.param("covariance_scale", &C::covariance_scale)
+      .range(0.0, 100.0)
+      .describe(
+          "each path starts from a draw of its model's state with the estimate's covariance taken this many times: a "
+          "filter tuned to follow manoeuvres quickly reports more uncertainty than it has (the aim's report, "
+          "futures_calibration, says whether the paths are too wide or too narrow)");
   c.param("max_speed_m_s", &C::max_speed_m_s)
       .with_unit("m/s")
       .range(0.1, 100.0)
@@ -69,7 +75,7 @@ ComponentSpec ImmSamples::spec() {
   c.param("reaction_speed_m_s", &C::reaction, &R::speed_m_s)
       .with_unit("m/s")
       .range(0.0, 100.0)
-      .describe("at this speed at least (its own, if faster), straight away from the hunter");
+      .describe("straight away from the hunter, at its own speed, or this speed if it is slower");
   c.param("reaction_acceleration_m_s2", &C::reaction, &R::acceleration_m_s2)
       .with_unit("m/s^2")
       .range(0.1, 100.0)
@@ -78,12 +84,11 @@ ComponentSpec ImmSamples::spec() {
       .with_unit("s")
       .range(0.01, 10.0)
       .describe("its velocity's time constant towards the flight away (a multirotor's response)");
-  c.param("reaction_evidence_m_s2", &C::reaction, &R::evidence_m_s2)
-      .with_unit("m/s^2")
+  c.param("reaction_concentration", &C::reaction, &R::concentration)
       .range(0.01, 100.0)
       .describe(
-          "the noise of the estimate's acceleration, against which the flight away and no acceleration are scored "
-          "each frame the hunter is within the radius");
+          "how tightly a reacting target's motion points away from the hunter (the sightings' headings are scored "
+          "against it, and against any heading alike, each frame the hunter is within the radius)");
   c.param("reaction_evidence_time_s", &C::reaction, &R::evidence_time_s)
       .with_unit("s")
       .range(0.01, 100.0)
@@ -106,7 +111,7 @@ ComponentSpec ImmSamples::spec() {
           "launch from these paths, and the fire policy weighs a shot now against one later on the same paths. With "
           "reaction_prior above 0, the target may also react to the hunter: within reaction_radius_m it flies away "
           "from it; the chance of a launch counts the futures both ways, the reacting ones flown against the "
-          "hunter's own path, weighed by how well each hypothesis explains the accelerations seen near the hunter.")
+          "hunter's own path, weighed by how well each hypothesis explains the headings seen near the hunter.")
       .config(std::move(c));
 }
 
@@ -166,7 +171,7 @@ TargetFutures ImmSamples::predict(const std::vector<MotionHypothesis>& hypothese
   for (std::size_t h = 0; h < hypotheses.size(); ++h) {
     if (count[h] == 0) continue;
     const MotionHypothesis& hyp = hypotheses[h];
-    const tracking::Covariance start_root = square_root(hyp.covariance);
+    const tracking::Covariance start_root = square_root(cfg_.covariance_scale * hyp.covariance);
     const tracking::Covariance noise_root =
         square_root(tracking::model_process_noise(hyp.model, cfg_.step_s, q_of(hyp.model)));
     for (std::int64_t n = 0; n < count[h]; ++n) {
@@ -194,7 +199,7 @@ TargetFutures ImmSamples::predict(const std::vector<MotionHypothesis>& hypothese
 }
 
 void ImmSamples::observe(double dt, const tracking::State& target, const Eigen::Vector3d& hunter) {
-  belief_.observe(dt, target.head<3>(), target.segment<3>(3), target.segment<3>(6), hunter);
+  belief_.observe(dt, target.head<3>(), target.segment<3>(3), hunter);
 }
 
 }  // namespace kestrel::guidance

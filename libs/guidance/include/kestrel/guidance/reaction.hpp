@@ -1,11 +1,12 @@
 #pragma once
 // A target that reacts to the hunter, as one more hypothesis of its futures: within `radius_m` of
-// the hunter it flies away from it, its velocity turning towards `speed_m_s` directly away within
-// `acceleration_m_s2` (a multirotor's response, `response_s`). Its weight is how well it explains
-// the sightings: each frame the hunter is within the radius, the acceleration the estimate shows is
-// scored under both hypotheses (it reacts: the flight away; it does not: no acceleration), the log
-// odds of reacting summing their likelihood ratio and slowly forgetting it. Nothing in it is keyed to
-// a path the target flies: a target that never comes near the hunter never shows either way.
+// the hunter it flies away from it, its velocity turning straight away at its own speed (at least
+// `speed_m_s`) within `acceleration_m_s2` (a multirotor's response, `response_s`). Its weight is how well it explains
+// the sightings: each frame the hunter is within the radius, the direction the target moves is
+// scored under both hypotheses (it reacts: away from the hunter, concentrated about that direction;
+// it does not: any direction alike), the log odds of reacting summing their likelihood ratio and
+// slowly forgetting it. A target slower than `speed_m_s` counts as moving that much less away. Nothing in it is keyed
+// to a path the target flies: a target that never comes near the hunter never shows either way.
 #include <Eigen/Core>
 #include <cstddef>
 #include <functional>
@@ -17,13 +18,13 @@ struct TargetFutures;
 struct ReactionConfig {
   double prior = 0.0;              ///< the reacting hypothesis's weight before any evidence (0: none)
   double radius_m = 6.0;           ///< it reacts to a hunter this near
-  double speed_m_s = 6.0;          ///< it flees at this speed, at least its own
+  double speed_m_s = 2.0;          ///< it flees at its own speed, at least this
   double acceleration_m_s2 = 6.0;  ///< and accelerates no harder
   double response_s = 0.25;        ///< its velocity's time constant towards the flight away
-  double evidence_m_s2 = 2.0;      ///< the acceleration estimate's noise: how much one frame says
+  double concentration = 3.0;      ///< how tightly a reacting target's motion points away
   double evidence_time_s = 0.5;    ///< the evidence of this long counts as one observation
   double memory_s = 10.0;          ///< the log odds forget towards the prior with this time constant
-  double max_probability = 0.9;    ///< nor is either hypothesis ever sure
+  double max_probability = 0.98;   ///< nor is either hypothesis ever sure
 };
 
 /// Where the hunter will be at time s from the futures' origin (world).
@@ -38,9 +39,9 @@ Eigen::Vector3d reaction_acceleration(const ReactionConfig& config, const Eigen:
 class ReactionBelief {
  public:
   explicit ReactionBelief(ReactionConfig config = {});
-  /// One frame of the world estimate: the target's position, velocity and acceleration; where the hunter is.
+  /// One frame of the world estimate: the target's position and velocity; where the hunter is.
   void observe(double dt, const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
-               const Eigen::Vector3d& acceleration, const Eigen::Vector3d& hunter);
+               const Eigen::Vector3d& hunter);
   double probability() const;
   void reset();
   const ReactionConfig& config() const { return cfg_; }

@@ -53,9 +53,10 @@ struct FuturesConfig {
   std::int64_t samples = 64;
   double horizon_s = 3.0;
   double step_s = 0.1;
-  double q_velocity = 4.0;       ///< m^2/s^3: constant velocity's white-noise acceleration
-  double q_acceleration = 10.0;  ///< m^2/s^5: constant acceleration's white-noise jerk
-  double q_turn = 10.0;          ///< m^2/s^5: the coordinated turn's white-noise jerk
+  double q_velocity = 4.0;        ///< m^2/s^3: constant velocity's white-noise acceleration
+  double q_acceleration = 10.0;   ///< m^2/s^5: constant acceleration's white-noise jerk
+  double q_turn = 10.0;           ///< m^2/s^5: the coordinated turn's white-noise jerk
+  double covariance_scale = 1.0;  ///< the estimate's covariance is taken this many times for the paths' starts
   double max_speed_m_s = 20.0;
   double max_acceleration_m_s2 = 12.0;
   ReactionConfig reaction;  ///< the hypothesis that it reacts to the hunter (prior 0: none)
