@@ -1,6 +1,7 @@
 // The aim's planning cost per frame: the target's futures drawn from a three-model estimate
 // (imm_samples), the intercept_search over them, and the capture chance of a shot now, as the
-// aim planner runs them each frame. The goal is 5 ms a frame at 30 Hz (docs/control.md).
+// aim planner runs them each frame, with and without a target that reacts to the hunter. The goal is
+// 5 ms a frame at 30 Hz (docs/control.md).
 #include <benchmark/benchmark.h>
 
 #include <kestrel/guidance/capture_chance.hpp>
@@ -66,8 +67,28 @@ void BM_PlanAndShotNow(benchmark::State& state) {
   state.counters["planned"] = planner.command(e).terminal ? 0.0 : 1.0;  // 1: a launch was found, not the aim law
 }
 
+// The same with the hypothesis that the target reacts to the hunter held at 0.5: each candidate's
+// chance also flies a quarter of the paths again against the hunter's path to that launch.
+void BM_PlanAgainstAReactingTarget(benchmark::State& state) {
+  FuturesConfig config;
+  config.samples = state.range(0);
+  config.reaction.prior = 0.5;
+  ImmSamples predictor(config, 1);
+  const net::NetModel net{net::NetParams{}};
+  const auto futures = predictor.predict(estimate());
+  InterceptSearch planner{InterceptSearchConfig{}};
+  Engagement e = engagement(futures, net);
+  e.reaction = predictor.reaction();
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(planner.command(e).velocity);
+    planner.reset();
+  }
+  state.counters["planned"] = planner.command(e).terminal ? 0.0 : 1.0;
+}
+
 BENCHMARK(BM_Futures)->Arg(64)->Arg(256)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PlanAndShotNow)->Arg(64)->Arg(256)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PlanAgainstAReactingTarget)->Arg(64)->Arg(256)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

@@ -17,7 +17,7 @@ struct TargetFutures;
 
 struct ReactionConfig {
   double prior = 0.0;              ///< the reacting hypothesis's weight before any evidence (0: none)
-  double radius_m = 6.0;           ///< it reacts to a hunter this near
+  double radius_m = 5.0;           ///< it reacts to a hunter this near
   double speed_m_s = 2.0;          ///< it flees at its own speed, at least this
   double acceleration_m_s2 = 6.0;  ///< and accelerates no harder
   double response_s = 0.25;        ///< its velocity's time constant towards the flight away
