@@ -33,6 +33,7 @@ void AimPlannerNode::fire(Context& ctx, const msg::Tracks& tracks, const msg::Tr
         {"prediction", prediction_record(*frame.shot, frame.uncertainty->lead_s, *estimate_, oscillation_)}};
     if (const auto mu = estimate_->model_probabilities(); !mu.empty()) record["model_probabilities"] = mu;
     if (const guidance::ReactionBelief* belief = predictor_->reaction()) record["reacting"] = belief->probability();
+    if (const auto repeating = predictor_->repeating()) record["repeating"] = *repeating;
     shots_.push_back(std::move(record));
     ctx.publish(kFire, msg::NetFire{tracks.stamp, target->id, *frame.error});
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kestrel/guidance/log_odds.hpp"
 #include "kestrel/guidance/target_futures.hpp"
 
 namespace kestrel::guidance {
@@ -13,8 +14,6 @@ Eigen::Vector3d limited(const Eigen::Vector3d& v, double limit) {
   const double n = v.norm();
   return n > limit && n > 0.0 ? Eigen::Vector3d(v * (limit / n)) : v;
 }
-
-double logit(double p) { return std::log(p / (1.0 - p)); }
 
 }  // namespace
 
@@ -35,7 +34,7 @@ void ReactionBelief::reset() {
 
 double ReactionBelief::probability() const {
   if (cfg_.prior <= 0.0) return 0.0;
-  return 1.0 / (1.0 + std::exp(-log_odds_));
+  return logistic(log_odds_);
 }
 
 void ReactionBelief::observe(double dt, const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,

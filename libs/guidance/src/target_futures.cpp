@@ -51,9 +51,10 @@ ComponentSpec ImmSamples::spec() {
   c.param("covariance_scale", &C::covariance_scale)
       .range(0.0, 100.0)
       .describe(
-          "each path starts from a draw of its model's state with the estimate's covariance taken this many times: a "
-          "filter tuned to follow manoeuvres quickly reports more uncertainty than it has (the aim's report, "
-          "futures_calibration, says whether the paths are too wide or too narrow)");
+          "each path starts from a draw of its model's state with the estimate's covariance taken this many times (1: "
+          "as the filter reports it); the aim's report, futures_calibration, says whether the paths are too wide or "
+          "too "
+          "narrow");
   c.param("max_speed_m_s", &C::max_speed_m_s)
       .with_unit("m/s")
       .range(0.1, 100.0)
@@ -98,6 +99,43 @@ ComponentSpec ImmSamples::spec() {
       .range(0.1, 3600.0)
       .describe("the evidence fades towards the prior with this time constant: a target may change its ways");
   c.param("reaction_max_probability", &C::reaction, &R::max_probability)
+      .range(0.5, 1.0)
+      .describe("neither hypothesis is ever surer than this");
+  using P = RepeatConfig;
+  c.param("repeat_prior", &C::repeat, &P::prior)
+      .range(0.0, 1.0)
+      .describe(
+          "the weight of the hypothesis that the target repeats its own past (the method of analogues: what followed "
+          "the past states nearest the present one) before the sightings say; 0: no such hypothesis");
+  c.param("repeat_window_s", &C::repeat, &P::window_s)
+      .with_unit("s")
+      .range(1.0, 600.0)
+      .describe("how much of the target's past is searched for analogues");
+  c.param("repeat_matches", &C::repeat, &P::matches).range(1, 256).describe("the analogues used, nearest first");
+  c.param("repeat_position_m", &C::repeat, &P::position_m)
+      .with_unit("m")
+      .range(0.01, 100.0)
+      .describe("the scale of a position match");
+  c.param("repeat_velocity_m_s", &C::repeat, &P::velocity_m_s)
+      .with_unit("m/s")
+      .range(0.01, 100.0)
+      .describe("the scale of a velocity match");
+  c.param("repeat_max_distance", &C::repeat, &P::max_distance)
+      .range(0.1, 100.0)
+      .describe("no analogue farther than this from the present state, in those scales");
+  c.param("repeat_check_s", &C::repeat, &P::check_s)
+      .with_unit("s")
+      .range(0.1, 10.0)
+      .describe("how far ahead the analogues' forecasts and the models' are checked against the sightings");
+  c.param("repeat_error_m", &C::repeat, &P::error_m)
+      .with_unit("m")
+      .range(0.01, 100.0)
+      .describe("the forecasts' error scale in that check");
+  c.param("repeat_evidence_time_s", &C::repeat, &P::evidence_time_s)
+      .with_unit("s")
+      .range(0.01, 100.0)
+      .describe("this long of sightings counts as one observation");
+  c.param("repeat_max_probability", &C::repeat, &P::max_probability)
       .range(0.5, 1.0)
       .describe("neither hypothesis is ever surer than this");
   c.rule("step_s < horizon_s", {"step_s", "horizon_s"}, [](const C& k) { return k.step_s < k.horizon_s; });
@@ -195,11 +233,21 @@ TargetFutures ImmSamples::predict(const std::vector<MotionHypothesis>& hypothese
       futures.paths.push_back(std::move(path));
     }
   }
+  // The target repeating its past: a share of the paths, by the hypothesis's weight, replaced by
+  // the analogues' (spread over the models' paths, so that each model keeps its share of the rest).
+  if (cfg_.repeat.prior > 0.0 && !futures.empty()) {
+    const auto analogues = repeat_.paths(steps, cfg_.step_s, futures.mean(cfg_.repeat.check_s));
+    const auto n = futures.paths.size();
+    const auto m = std::min(n, static_cast<std::size_t>(std::lround(repeat_.probability() * static_cast<double>(n))));
+    if (!analogues.empty())
+      for (std::size_t i = 0; i < m; ++i) futures.paths[i * n / m] = analogues[i % analogues.size()];
+  }
   return futures;
 }
 
 void ImmSamples::observe(double dt, const tracking::State& target, const Eigen::Vector3d& hunter) {
   belief_.observe(dt, target.head<3>(), target.segment<3>(3), hunter);
+  repeat_.observe(dt, target.head<3>(), target.segment<3>(3));
 }
 
 }  // namespace kestrel::guidance

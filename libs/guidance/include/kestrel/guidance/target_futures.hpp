@@ -11,6 +11,7 @@
 //       predictor: {type: imm_samples, samples: 64, horizon_s: 3.0}
 #include <Eigen/Core>
 #include <cstdint>
+#include <optional>
 #include <random>
 #include <string_view>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "kestrel/component.hpp"
 #include "kestrel/config_spec.hpp"
 #include "kestrel/guidance/reaction.hpp"
+#include "kestrel/guidance/repeat_prediction.hpp"
 #include "kestrel/node_spec.hpp"
 #include "kestrel/tracking/constant_acceleration.hpp"
 #include "kestrel/tracking/motion_models.hpp"
@@ -60,6 +62,7 @@ struct FuturesConfig {
   double max_speed_m_s = 20.0;
   double max_acceleration_m_s2 = 12.0;
   ReactionConfig reaction;  ///< the hypothesis that it reacts to the hunter (prior 0: none)
+  RepeatConfig repeat;      ///< the hypothesis that it repeats its own past (prior 0: none)
 };
 
 /// The component of kind "predictor" that draws the futures.
@@ -74,6 +77,8 @@ class Predictor {
   virtual void observe(double /*dt*/, const tracking::State& /*target*/, const Eigen::Vector3d& /*hunter*/) {}
   /// The hypothesis that the target reacts to the hunter, if the predictor holds one.
   virtual const ReactionBelief* reaction() const { return nullptr; }
+  /// The weight of the hypothesis that the target repeats its own past, if the predictor holds one.
+  virtual std::optional<double> repeating() const { return std::nullopt; }
   /// A new target: forget what was learnt of the last.
   virtual void reset() {}
 };
@@ -90,6 +95,9 @@ class ImmSamples final : public Predictor {
   TargetFutures predict(const std::vector<MotionHypothesis>& hypotheses) override;
   void observe(double dt, const tracking::State& target, const Eigen::Vector3d& hunter) override;
   const ReactionBelief* reaction() const override { return cfg_.reaction.prior > 0.0 ? &belief_ : nullptr; }
+  std::optional<double> repeating() const override {
+    return cfg_.repeat.prior > 0.0 ? std::optional<double>(repeat_.probability()) : std::nullopt;
+  }
   void reset() override { belief_.reset(); }
   const FuturesConfig& config() const { return cfg_; }
 
@@ -100,6 +108,7 @@ class ImmSamples final : public Predictor {
   std::mt19937_64 rng_;
   std::normal_distribution<double> normal_{0.0, 1.0};
   ReactionBelief belief_{cfg_.reaction};
+  RepeatPredictor repeat_{cfg_.repeat};
 };
 
 }  // namespace kestrel::guidance
