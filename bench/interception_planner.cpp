@@ -1,9 +1,10 @@
 // The aim's planning cost per frame: the target's futures drawn from a three-model estimate
 // (imm_samples), the intercept_search over them, and the capture chance of a shot now, as the
-// aim planner runs them each frame, with and without a target that reacts to the hunter. The goal is
+// aim planner runs them each frame, with and without a target that reacts to the hunter or repeats itself. The goal is
 // 5 ms a frame at 30 Hz (docs/control.md).
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <kestrel/guidance/capture_chance.hpp>
 #include <kestrel/guidance/intercept_search.hpp>
 #include <kestrel/guidance/target_futures.hpp>
@@ -86,7 +87,26 @@ void BM_PlanAgainstAReactingTarget(benchmark::State& state) {
   state.counters["planned"] = planner.command(e).terminal ? 0.0 : 1.0;
 }
 
+// The futures with the hypothesis that the target repeats its past, after 20 s of a target circling
+// every 4 s: the analogues searched in the kept past each frame.
+void BM_FuturesOfATargetThatRepeatsItself(benchmark::State& state) {
+  FuturesConfig config;
+  config.samples = state.range(0);
+  config.repeat.prior = 0.5;
+  ImmSamples predictor(config, 1);
+  const double w = 2.0 * M_PI / 4.0, dt = 1.0 / 30.0;
+  tracking::State x = tracking::State::Zero();
+  for (double t = 0.0; t < 20.0; t += dt) {
+    x.head<3>() = Eigen::Vector3d(6.0 + 2.0 * std::cos(w * t), 2.0 * std::sin(w * t), 2.0);
+    x.segment<3>(3) = Eigen::Vector3d(-2.0 * w * std::sin(w * t), 2.0 * w * std::cos(w * t), 0.0);
+    predictor.observe(dt, x, Eigen::Vector3d::Zero());
+  }
+  const auto hypotheses = estimate();
+  for (auto _ : state) benchmark::DoNotOptimize(predictor.predict(hypotheses).size());
+}
+
 BENCHMARK(BM_Futures)->Arg(64)->Arg(256)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_FuturesOfATargetThatRepeatsItself)->Arg(64)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PlanAndShotNow)->Arg(64)->Arg(256)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PlanAgainstAReactingTarget)->Arg(64)->Arg(256)->Unit(benchmark::kMicrosecond);
 
