@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <kestrel/guidance/repeat_prediction.hpp>
+#include <kestrel/guidance/target_futures.hpp>
 
 using namespace kestrel::guidance;
 
@@ -66,4 +67,31 @@ TEST(RepeatPrediction, ItsWeightRisesWhenItForetellsBetterThanTheModels) {
     even.paths(30, 0.1, circle(t + 1.0));
   }
   EXPECT_NEAR(even.probability(), 0.5, 0.1);
+}
+
+TEST(RepeatPrediction, ThePredictorGivesTheAnaloguesTheirShareOfThePaths) {
+  FuturesConfig config;
+  config.samples = 16;
+  config.q_velocity = config.q_acceleration = config.q_turn = 0.0;
+  config.repeat = on();  // weight 0.5: half the paths
+  ImmSamples predictor(config, 1);
+  double t = 0.0;
+  for (; t < 12.0; t += kDt) {
+    tracking::State x = tracking::State::Zero();
+    x.head<3>() = circle(t);
+    x.segment<3>(3) = circle_velocity(t);
+    predictor.observe(kDt, x, Eigen::Vector3d(20.0, 0.0, 3.0));
+  }
+  MotionHypothesis straight;  // the models know only the present velocity
+  straight.model = tracking::MotionModel::constant_velocity;
+  straight.mean.head<3>() = circle(t - kDt);
+  straight.mean.segment<3>(3) = circle_velocity(t - kDt);
+  straight.covariance = tracking::Covariance::Zero();
+  const TargetFutures futures = predictor.predict({straight});
+  ASSERT_EQ(futures.size(), 16u);
+  int round_the_circle = 0;
+  for (std::size_t i = 0; i < futures.size(); ++i)
+    round_the_circle += (futures.position(i, 1.0) - circle(t - kDt + 1.0)).norm() < 0.15;
+  EXPECT_EQ(round_the_circle, 8);
+  EXPECT_NEAR(*predictor.repeating(), 0.5, 1e-12);
 }
