@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "kestrel/guidance/log_odds.hpp"
 #include "kestrel/guidance/target_futures.hpp"
 
 namespace kestrel::guidance {
@@ -26,22 +25,16 @@ Eigen::Vector3d reaction_acceleration(const ReactionConfig& config, const Eigen:
   return limited((wanted - velocity) / std::max(config.response_s, 1e-3), config.acceleration_m_s2);
 }
 
-ReactionBelief::ReactionBelief(ReactionConfig config) : cfg_(config) { reset(); }
+ReactionBelief::ReactionBelief(ReactionConfig config) : cfg_(config) {}
 
-void ReactionBelief::reset() {
-  log_odds_ = cfg_.prior > 0.0 ? logit(std::clamp(cfg_.prior, 1.0 - cfg_.max_probability, cfg_.max_probability)) : 0.0;
-}
+void ReactionBelief::reset() { weight_.reset(); }
 
-double ReactionBelief::probability() const {
-  if (cfg_.prior <= 0.0) return 0.0;
-  return logistic(log_odds_);
-}
+double ReactionBelief::probability() const { return weight_.probability(); }
 
 void ReactionBelief::observe(double dt, const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
                              const Eigen::Vector3d& hunter) {
-  if (cfg_.prior <= 0.0 || dt <= 0.0) return;
-  const double prior = logit(std::clamp(cfg_.prior, 1.0 - cfg_.max_probability, cfg_.max_probability));
-  log_odds_ = prior + (log_odds_ - prior) * std::exp(-dt / cfg_.memory_s);
+  if (!weight_.active() || dt <= 0.0) return;
+  weight_.fade(std::exp(-dt / cfg_.memory_s));
   const Eigen::Vector3d away = position - hunter;
   const double range = away.norm();
   if (range < cfg_.radius_m && range > 1e-6) {
@@ -51,10 +44,8 @@ void ReactionBelief::observe(double dt, const Eigen::Vector3d& position, const E
     // Reacting: density k exp(k (c - 1)) / (1 - exp(-2k)) on [-1, 1]; not: 1/2 (any direction).
     const double k = cfg_.concentration;
     const double ratio = std::log(2.0 * k / (1.0 - std::exp(-2.0 * k))) + k * (along - 1.0);
-    log_odds_ += dt / cfg_.evidence_time_s * ratio;
+    weight_.add(dt / cfg_.evidence_time_s * ratio);
   }
-  const double most = logit(cfg_.max_probability);
-  log_odds_ = std::clamp(log_odds_, -most, most);
 }
 
 TargetFutures reacting_futures(const TargetFutures& futures, const ReactionConfig& config, const HunterPath& hunter,

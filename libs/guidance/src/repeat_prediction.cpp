@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "kestrel/guidance/log_odds.hpp"
-
 namespace kestrel::guidance {
 
 namespace {
@@ -13,14 +11,12 @@ constexpr double kSeparation_s = 0.5;      // two analogues from one pass are on
 
 }  // namespace
 
-RepeatPredictor::RepeatPredictor(RepeatConfig config) : cfg_(config) {
-  if (cfg_.prior > 0.0) log_odds_ = logit(std::clamp(cfg_.prior, 1.0 - cfg_.max_probability, cfg_.max_probability));
-}
+RepeatPredictor::RepeatPredictor(RepeatConfig config) : cfg_(config) {}
 
-double RepeatPredictor::probability() const { return cfg_.prior > 0.0 ? logistic(log_odds_) : 0.0; }
+double RepeatPredictor::probability() const { return weight_.probability(); }
 
 void RepeatPredictor::observe(double dt, const Eigen::Vector3d& position, const Eigen::Vector3d& velocity) {
-  if (cfg_.prior <= 0.0) return;
+  if (!weight_.active()) return;
   now_ += std::max(dt, 0.0);
   past_.push_back({now_, position, velocity});
   while (!past_.empty() && past_.front().t < now_ - cfg_.window_s) past_.pop_front();
@@ -29,9 +25,7 @@ void RepeatPredictor::observe(double dt, const Eigen::Vector3d& position, const 
     if (f.repeat && std::abs(f.t + cfg_.check_s - now_) <= kForecastMatch_s) {
       const double scale = 2.0 * cfg_.error_m * cfg_.error_m;
       const double ratio = ((position - f.models).squaredNorm() - (position - *f.repeat).squaredNorm()) / scale;
-      log_odds_ += std::min(dt, 0.1) / cfg_.evidence_time_s * std::clamp(ratio, -4.0, 4.0);
-      const double most = logit(cfg_.max_probability);
-      log_odds_ = std::clamp(log_odds_, -most, most);
+      weight_.add(std::min(dt, 0.1) / cfg_.evidence_time_s * std::clamp(ratio, -4.0, 4.0));
     }
   while (!forecasts_.empty() && forecasts_.front().t < now_ - cfg_.check_s - 0.1) forecasts_.pop_front();
 }
@@ -49,7 +43,7 @@ Eigen::Vector3d RepeatPredictor::position_at(double t) const {
 std::vector<Eigen::Matrix3Xd> RepeatPredictor::paths(Eigen::Index steps, double step_s,
                                                      const Eigen::Vector3d& models_ahead) {
   std::vector<Eigen::Matrix3Xd> out;
-  if (cfg_.prior <= 0.0 || past_.empty()) return out;
+  if (!weight_.active() || past_.empty()) return out;
   const Past& present = past_.back();
   const double horizon = static_cast<double>(steps) * step_s;
   // The past states whose next horizon is known, by how near they are to the present one.

@@ -11,6 +11,8 @@
 #include <cstddef>
 #include <functional>
 
+#include "kestrel/guidance/log_odds.hpp"
+
 namespace kestrel::guidance {
 
 struct TargetFutures;
@@ -48,7 +50,7 @@ class ReactionBelief {
 
  private:
   ReactionConfig cfg_;
-  double log_odds_ = 0.0;
+  HypothesisWeight weight_{cfg_.prior, cfg_.max_probability};
 };
 
 /// The futures as they would be if every path reacted to a hunter flying `hunter`: each path of

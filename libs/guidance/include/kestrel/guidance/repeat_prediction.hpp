@@ -14,6 +14,8 @@
 #include <optional>
 #include <vector>
 
+#include "kestrel/guidance/log_odds.hpp"
+
 namespace kestrel::guidance {
 
 struct RepeatConfig {
@@ -58,7 +60,7 @@ class RepeatPredictor {
   std::deque<Past> past_;
   std::deque<Forecast> forecasts_;
   double now_ = 0.0;
-  double log_odds_ = 0.0;
+  HypothesisWeight weight_{cfg_.prior, cfg_.max_probability};
 };
 
 }  // namespace kestrel::guidance
