@@ -22,6 +22,15 @@
 
 namespace kestrel::aim {
 
+/// +1 to turn counter-clockwise (seen from above), -1 clockwise: the side of the hunter's heading
+/// `heading_rad` on which `expected_target` (world) lies, from `hunter` (world). Straight ahead
+/// or behind, counter-clockwise.
+double search_side(double heading_rad, const Eigen::Vector3d& hunter, const Eigen::Vector3d& expected_target);
+
+/// The target's last estimate (position and velocity), flown on for `elapsed_s`.
+Eigen::Vector3d expected_position(const Eigen::Vector3d& last_position, const Eigen::Vector3d& last_velocity,
+                                  double elapsed_s);
+
 /// What the search knows of the lost target, as the loss begins (world).
 struct LostTarget {
   Eigen::Vector3d last_position = Eigen::Vector3d::Zero();  ///< the estimate when last seen
