@@ -64,6 +64,12 @@ ComponentSpec InterceptSearch::spec() {
           "nor nearer than this to the hunter along the path: the camera loses a target that close, and a hunter "
           "that overshoots a launch it did not fire would fly into it (the launch itself is further, where the net "
           "opens)");
+  c.param("check_braking", &C::check_braking)
+      .describe(
+          "a launch counts only when the hunter, braking to the target's velocity after it (at most at "
+          "acceleration_share of its limit), stays no nearer than min_range_m and ends with the target in view: a "
+          "launch at a closing speed otherwise carries the hunter past the target, which it loses, and the second "
+          "net with it");
   c.param("hazard_time_s", &C::hazard_time_s)
       .with_unit("s")
       .range(0.05, 1000.0)
@@ -130,6 +136,33 @@ bool InterceptSearch::in_view(const Eigen::Vector3d& hunter, const Eigen::Vector
          std::abs(seen.y()) <= seen.z() * std::tan(cfg_.view_half_height_deg * kDeg);
 }
 
+bool InterceptSearch::brakes_in_view(const Engagement& e, const LaunchPlan& plan, double reach) const {
+  const TargetFutures& futures = *e.futures;
+  const Eigen::Vector3d target_velocity = futures.mean_velocity(plan.time_s);
+  const Eigen::Vector3d closing = plan.velocity - target_velocity;
+  const double speed = closing.norm();
+  if (speed < 1e-3) return true;
+  // The gentlest constant deceleration that stops the closing min_range_m short of the target
+  // (a hard one pitches the camera off it), at most `reach`.
+  const Eigen::Vector3d along = closing / speed;
+  const double room = (futures.mean(plan.time_s) - plan.point).dot(along) - cfg_.min_range_m;
+  if (room <= 0.0) return false;
+  const double braking = speed * speed / (2.0 * room);
+  if (braking > reach) return false;
+  const double stop_s = speed / braking;
+  const Eigen::Vector3d deceleration = -braking * along;
+  // Braking pitches the camera up, off a target below it, for a moment; once with the target, level,
+  // the camera must hold it again.
+  Eigen::Vector3d hunter = plan.point, target = futures.mean(plan.time_s);
+  for (int k = 1; k <= kPathChecks / 2; ++k) {
+    const double s = stop_s * k / (kPathChecks / 2);
+    hunter = plan.point + plan.velocity * s + 0.5 * deceleration * s * s;
+    target = futures.mean(plan.time_s + s);
+    if ((target - hunter).norm() < cfg_.min_range_m) return false;
+  }
+  return in_view(hunter, Eigen::Vector3d::Zero(), target, e.geometry.camera_offset_body);
+}
+
 std::optional<LaunchPlan> InterceptSearch::candidate(const Engagement& e, double tau, double closing,
                                                      const std::optional<Eigen::Vector2d>& line) const {
   const TargetFutures& futures = *e.futures;
@@ -174,6 +207,7 @@ std::optional<LaunchPlan> InterceptSearch::candidate(const Engagement& e, double
     if ((target - hunter).norm() < cfg_.min_range_m || !in_view(hunter, a, target, e.geometry.camera_offset_body))
       return std::nullopt;
   }
+  if (cfg_.check_braking && !brakes_in_view(e, plan, share * e.limits.max_acceleration)) return std::nullopt;
   const double sigma = cfg_.execution_error_m + cfg_.execution_error_m_s * tau;
   std::vector<Eigen::Vector3d> errors(futures.size());
   for (std::size_t i = 0; i < errors.size(); ++i) errors[i] = sigma * unit_errors_[i % unit_errors_.size()];
