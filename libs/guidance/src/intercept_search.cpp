@@ -64,12 +64,6 @@ ComponentSpec InterceptSearch::spec() {
           "nor nearer than this to the hunter along the path: the camera loses a target that close, and a hunter "
           "that overshoots a launch it did not fire would fly into it (the launch itself is further, where the net "
           "opens)");
-  c.param("check_braking", &C::check_braking)
-      .describe(
-          "a launch counts only when the hunter, braking to the target's velocity after it (at most at "
-          "acceleration_share of its limit), stays no nearer than min_range_m and ends with the target in view: a "
-          "launch at a closing speed otherwise carries the hunter past the target, which it loses, and the second "
-          "net with it");
   c.param("hazard_time_s", &C::hazard_time_s)
       .with_unit("s")
       .range(0.05, 1000.0)
@@ -90,6 +84,26 @@ ComponentSpec InterceptSearch::spec() {
       .describe(
           "the launch being flown is kept, its time counting down, while its value is at least this share of the "
           "best new candidate's (1: choose afresh every frame)");
+  c.param("standoff_belief", &C::standoff_belief)
+      .range(0.0, 1.0)
+      .describe(
+          "with the predictor's reacting hypothesis (reaction_prior above 0) at least this likely, a target that "
+          "no launch within reach is worth standoff_value against is waited for beyond its reaction radius, not "
+          "closed on: a hunter that comes nearer only makes it flee, and a run-in from beyond the radius is a launch "
+          "the search finds");
+  c.param("standoff_value", &C::standoff_value)
+      .range(0.0, 1.0)
+      .describe("the value (chance discounted for the wait) a launch must have to be flown at a reacting target");
+  c.param("standoff_margin_m", &C::standoff_margin_m)
+      .with_unit("m")
+      .range(0.0, 100.0)
+      .describe(
+          "the wait is this far beyond the reaction radius, horizontally: room to reach a closing speed that carries "
+          "the net to the target before it has fled far");
+  c.param("standoff_height_m", &C::standoff_height_m)
+      .with_unit("m")
+      .range(-10.0, 10.0)
+      .describe("and this far above the target (the net falls as it flies)");
   c.param("seed", &C::seed).describe("the hunter's errors, drawn once per path");
   c.rule("step_s <= horizon_s", {"step_s", "horizon_s"}, [](const C& k) { return k.step_s <= k.horizon_s; });
   return ComponentSpec("intercept_search", "Plans the launch over the target's sampled futures")
@@ -109,7 +123,9 @@ ComponentSpec InterceptSearch::spec() {
           "point along that path, facing its launch heading within "
           "max_look_away_deg of the target's bearing; with no "
           "candidate within reach it hands over to the terminal phase, the paper's aim law. The launch flown is kept, "
-          "its time counting down, while its value is at least keep_share of the best new candidate's.")
+          "its time counting down, while its value is at least keep_share of the best new candidate's. A target the "
+          "predictor believes reacts to the hunter (at least standoff_belief) is waited for standoff_margin_m beyond "
+          "its reaction radius while no launch is worth standoff_value: from there a fast run-in is a launch.")
       .config(std::move(c));
 }
 
@@ -134,33 +150,6 @@ bool InterceptSearch::in_view(const Eigen::Vector3d& hunter, const Eigen::Vector
   return seen.z() > 0.0 && seen.norm() <= cfg_.view_range_m &&
          std::abs(seen.x()) <= seen.z() * std::tan(cfg_.view_half_width_deg * kDeg) &&
          std::abs(seen.y()) <= seen.z() * std::tan(cfg_.view_half_height_deg * kDeg);
-}
-
-bool InterceptSearch::brakes_in_view(const Engagement& e, const LaunchPlan& plan, double reach) const {
-  const TargetFutures& futures = *e.futures;
-  const Eigen::Vector3d target_velocity = futures.mean_velocity(plan.time_s);
-  const Eigen::Vector3d closing = plan.velocity - target_velocity;
-  const double speed = closing.norm();
-  if (speed < 1e-3) return true;
-  // The gentlest constant deceleration that stops the closing min_range_m short of the target
-  // (a hard one pitches the camera off it), at most `reach`.
-  const Eigen::Vector3d along = closing / speed;
-  const double room = (futures.mean(plan.time_s) - plan.point).dot(along) - cfg_.min_range_m;
-  if (room <= 0.0) return false;
-  const double braking = speed * speed / (2.0 * room);
-  if (braking > reach) return false;
-  const double stop_s = speed / braking;
-  const Eigen::Vector3d deceleration = -braking * along;
-  // Braking pitches the camera up, off a target below it, for a moment; once with the target, level,
-  // the camera must hold it again.
-  Eigen::Vector3d hunter = plan.point, target = futures.mean(plan.time_s);
-  for (int k = 1; k <= kPathChecks / 2; ++k) {
-    const double s = stop_s * k / (kPathChecks / 2);
-    hunter = plan.point + plan.velocity * s + 0.5 * deceleration * s * s;
-    target = futures.mean(plan.time_s + s);
-    if ((target - hunter).norm() < cfg_.min_range_m) return false;
-  }
-  return in_view(hunter, Eigen::Vector3d::Zero(), target, e.geometry.camera_offset_body);
 }
 
 std::optional<LaunchPlan> InterceptSearch::candidate(const Engagement& e, double tau, double closing,
@@ -207,7 +196,6 @@ std::optional<LaunchPlan> InterceptSearch::candidate(const Engagement& e, double
     if ((target - hunter).norm() < cfg_.min_range_m || !in_view(hunter, a, target, e.geometry.camera_offset_body))
       return std::nullopt;
   }
-  if (cfg_.check_braking && !brakes_in_view(e, plan, share * e.limits.max_acceleration)) return std::nullopt;
   const double sigma = cfg_.execution_error_m + cfg_.execution_error_m_s * tau;
   std::vector<Eigen::Vector3d> errors(futures.size());
   for (std::size_t i = 0; i < errors.size(); ++i) errors[i] = sigma * unit_errors_[i % unit_errors_.size()];
@@ -224,6 +212,20 @@ std::optional<LaunchPlan> InterceptSearch::candidate(const Engagement& e, double
   plan.chance = capture_chance(futures, *e.net, Launch{tau, launcher, plan.velocity}, reacting, errors, true);
   plan.value = plan.chance.probability * std::exp(-tau / cfg_.hazard_time_s);
   return plan;
+}
+
+GuidanceCommand InterceptSearch::standoff(const Engagement& e) const {
+  const Eigen::Vector3d target = e.futures->mean(0.0), target_velocity = e.futures->mean_velocity(0.0);
+  Eigen::Vector2d sight = (target - e.position).head<2>();
+  sight = sight.norm() > 1e-3 ? Eigen::Vector2d(sight.normalized()) : Eigen::Vector2d(std::cos(e.yaw), std::sin(e.yaw));
+  const double range = e.reaction->config().radius_m + cfg_.standoff_margin_m;
+  Eigen::Vector3d wait = target;
+  wait.head<2>() -= range * sight;
+  wait.z() = std::max(target.z() + cfg_.standoff_height_m, e.min_altitude);
+  GuidanceCommand command;
+  command.velocity = target_velocity + cfg_.gain_1_s * (wait - e.position);
+  command.yaw = std::atan2(sight.y(), sight.x());
+  return command;
 }
 
 GuidanceCommand InterceptSearch::command(const Engagement& e) {
@@ -251,6 +253,14 @@ GuidanceCommand InterceptSearch::command(const Engagement& e) {
   if (flown && flown->time_s - e.dt >= 0.5 * cfg_.step_s) {
     const auto kept = candidate(e, flown->time_s - e.dt, flown->closing_m_s, flown->line);
     if (kept && (!plan_ || kept->value >= cfg_.keep_share * plan_->value)) plan_ = kept;
+  }
+  // A target that flees a near hunter is waited for beyond its reach until a launch is worth it.
+  if (e.reaction && e.reaction->probability() >= cfg_.standoff_belief && cfg_.standoff_belief > 0.0 &&
+      (!plan_ || plan_->value < cfg_.standoff_value)) {
+    GuidanceCommand command = standoff(e);
+    if (plan_) command.later_value = plan_->value;
+    plan_.reset();  // a plan not flown is not kept
+    return command;
   }
   if (!plan_) return terminal_phase();
   GuidanceCommand command;

@@ -90,6 +90,46 @@ TEST(InterceptSearch, HandsOverToTheTerminalPhaseWhenNoLaunchIsWithinReach) {
   EXPECT_TRUE(planner.command(blind).terminal);
 }
 
+TEST(InterceptSearch, WaitsBeyondTheReachOfATargetThatReactsUntilALaunchIsWorthIt) {
+  // A hovering target 20 m ahead, believed to flee a hunter within 5 m: no launch is within reach,
+  // so the hunter waits 5 + 5 m short of it on the line of sight, 1 m above it, facing it.
+  const auto futures = exactly_known({20.0, 0.0, 2.0}, Eigen::Vector3d::Zero());
+  ReactionConfig reaction;
+  reaction.prior = 0.9;
+  reaction.radius_m = 5.0;
+  const ReactionBelief belief(reaction);
+  InterceptSearch planner{InterceptSearchConfig{}};
+  Engagement e = planned_engagement({0.0, 0.0, 3.0}, Eigen::Vector3d::Zero(), 0.0, futures);
+  e.reaction = &belief;
+  const GuidanceCommand waiting = planner.command(e);
+  EXPECT_FALSE(waiting.terminal);
+  EXPECT_FALSE(planner.plan());
+  // Pulled (gain_1_s, 1.5 /s) towards (10, 0, 3): forward, level, no sideways.
+  EXPECT_NEAR(waiting.velocity.x(), 1.5 * 10.0, 1e-9);
+  EXPECT_NEAR(waiting.velocity.y(), 0.0, 1e-9);
+  EXPECT_NEAR(waiting.velocity.z(), 0.0, 1e-9);
+  EXPECT_NEAR(waiting.yaw, 0.0, 1e-9);
+  // Nearer than the wait it backs away, and once there it holds with the target's velocity.
+  e.position = {16.0, 0.0, 3.0};
+  EXPECT_LT(planner.command(e).velocity.x(), 0.0);
+  e.position = {10.0, 0.0, 3.0};
+  EXPECT_LT(planner.command(e).velocity.norm(), 0.05);  // the paths start a hair apart
+  // A target not believed to react is closed on as before: the aim law, with no launch in reach.
+  const ReactionBelief unlikely(ReactionConfig{.prior = 0.1});
+  e.position = {0.0, 0.0, 3.0};
+  e.reaction = &unlikely;
+  EXPECT_TRUE(planner.command(e).terminal);
+  // A launch worth standoff_value or more is flown even at a reacting target (a hovering one 6 m
+  // ahead, whose futures never flee: the launch's chance is its own).
+  const auto near = exactly_known({6.0, 0.0, 2.0}, Eigen::Vector3d::Zero());
+  Engagement close = planned_engagement({0.0, 0.0, 3.0}, Eigen::Vector3d::Zero(), 0.0, near);
+  close.reaction = &belief;
+  const GuidanceCommand flown = planner.command(close);
+  ASSERT_TRUE(planner.plan());
+  EXPECT_GE(planner.plan()->value, InterceptSearchConfig{}.standoff_value);
+  EXPECT_GT(flown.velocity.x(), 0.0);
+}
+
 namespace {
 
 // A target crossing 9 m ahead at 3 m/s, the hunter at rest: the time until a launch from the

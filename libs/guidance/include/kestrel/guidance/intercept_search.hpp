@@ -34,11 +34,14 @@ struct InterceptSearchConfig {
   double view_half_height_deg = 32.0;  ///< and up or down, along the path (the camera's view less a margin)
   double view_range_m = 14.0;          ///< and no farther
   double min_range_m = 1.8;            ///< nor nearer: the camera loses it, and the hunter may hit it
-  bool check_braking = true;           ///< and so while it brakes to the target's velocity after the launch
   double hazard_time_s = 2.0;          ///< a launch tau later is worth exp(-tau / this) as much
   double gain_1_s = 1.5;               ///< pull towards a launch point planned within min_plan_s
   double min_plan_s = 0.3;             ///< nearer launches are held, not flown to on a path
   double keep_share = 0.8;             ///< the launch flown is kept while worth this share of the best
+  double standoff_belief = 0.5;        ///< a target this likely to react to the hunter is waited for
+  double standoff_value = 0.25;        ///< beyond its reaction radius while no launch is worth this
+  double standoff_margin_m = 5.0;      ///< that far beyond the radius (room to run in)
+  double standoff_height_m = 1.0;      ///< above the target
   std::int64_t seed = 7;               ///< the hunter's errors drawn per path
 };
 
@@ -72,13 +75,13 @@ class InterceptSearch final : public Guidance {
   std::optional<LaunchPlan> candidate(const Engagement& e, double tau, double closing,
                                       const std::optional<Eigen::Vector2d>& line = std::nullopt) const;
 
+  /// Waiting beyond the reaction radius of a target that reacts to the hunter, facing it, its
+  /// velocity fed forward.
+  GuidanceCommand standoff(const Engagement& e) const;
+
   /// Whether a hunter at `hunter`, accelerating so and facing the target, sees it in its camera.
   bool in_view(const Eigen::Vector3d& hunter, const Eigen::Vector3d& acceleration, const Eigen::Vector3d& target,
                const Eigen::Vector3d& camera_offset) const;
-
-  /// Whether, after the launch, braking to the target's velocity at `reach` keeps it in view and
-  /// no nearer than min_range_m: a net that misses leaves the hunter where the next one is aimed from.
-  bool brakes_in_view(const Engagement& e, const LaunchPlan& plan, double reach) const;
 
   InterceptSearchConfig cfg_;
   std::vector<Eigen::Vector3d> unit_errors_;  // standard normal draws, one per path
