@@ -46,7 +46,7 @@ TEST(RepeatPrediction, ATargetThatNeverComesBackHasNoAnalogue) {
   RepeatPredictor repeat(on());
   for (double t = 0.0; t < 12.0; t += kDt) repeat.observe(kDt, {2.0 * t, 0.0, 3.0}, {2.0, 0.0, 0.0});
   EXPECT_TRUE(repeat.paths(30, 0.1, Eigen::Vector3d::Zero()).empty());
-  RepeatPredictor off(RepeatConfig{});  // prior 0: no hypothesis
+  RepeatPredictor off(RepeatConfig{.prior = 0.0});  // no hypothesis
   for (double t = 0.0; t < 12.0; t += kDt) off.observe(kDt, circle(t), circle_velocity(t));
   EXPECT_TRUE(off.paths(30, 0.1, Eigen::Vector3d::Zero()).empty());
   EXPECT_EQ(off.probability(), 0.0);

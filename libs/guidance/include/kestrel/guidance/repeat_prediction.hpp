@@ -19,9 +19,9 @@
 namespace kestrel::guidance {
 
 struct RepeatConfig {
-  double prior = 0.0;            ///< its weight before any evidence (0: no such hypothesis)
+  double prior = 0.5;            ///< its weight before any evidence (0: no such hypothesis)
   double window_s = 20.0;        ///< how much of the target's past is searched
-  std::int64_t matches = 8;      ///< the analogues used, nearest first
+  std::int64_t matches = 4;      ///< the analogues used, nearest first
   double position_m = 0.7;       ///< the scale of a position match
   double velocity_m_s = 1.0;     ///< the scale of a velocity match
   double max_distance = 1.0;     ///< no analogue farther than this, in those scales (root of the summed squares)
