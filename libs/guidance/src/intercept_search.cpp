@@ -90,7 +90,7 @@ ComponentSpec InterceptSearch::spec() {
           "with the predictor's reacting hypothesis (reaction_prior above 0) at least this likely, a target that "
           "no launch within reach is worth standoff_value against is waited for beyond its reaction radius, not "
           "closed on: a hunter that comes nearer only makes it flee, and a run-in from beyond the radius is a launch "
-          "the search finds");
+          "the search finds; 0: never");
   c.param("standoff_value", &C::standoff_value)
       .range(0.0, 1.0)
       .describe("the value (chance discounted for the wait) a launch must have to be flown at a reacting target");
