@@ -11,16 +11,25 @@ std::string Diagnostic::str() const {
   return prefix + (severity == Severity::error ? "error: " : "warning: ") + message;
 }
 
+// A part included twice is read twice: what is wrong in its file is said once.
+void Diagnostics::add(Diagnostic::Severity severity, SourceLocation where, std::string message) {
+  const auto same = [&](const Diagnostic& d) {
+    return d.severity == severity && d.message == message && d.where.str() == where.str();
+  };
+  if (std::none_of(items_.begin(), items_.end(), same))
+    items_.push_back({severity, std::move(where), std::move(message)});
+}
+
 void Diagnostics::error(SourceLocation where, std::string message) {
-  items_.push_back({Diagnostic::Severity::error, std::move(where), std::move(message)});
+  add(Diagnostic::Severity::error, std::move(where), std::move(message));
 }
 
 void Diagnostics::warning(SourceLocation where, std::string message) {
-  items_.push_back({Diagnostic::Severity::warning, std::move(where), std::move(message)});
+  add(Diagnostic::Severity::warning, std::move(where), std::move(message));
 }
 
 void Diagnostics::append(const Diagnostics& other) {
-  items_.insert(items_.end(), other.items_.begin(), other.items_.end());
+  for (const Diagnostic& d : other.items_) add(d.severity, d.where, d.message);
 }
 
 bool Diagnostics::has_errors() const { return error_count() > 0; }

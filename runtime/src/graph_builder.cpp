@@ -16,6 +16,7 @@
 
 #include "graph_header.hpp"
 #include "graph_order.hpp"
+#include "graph_part.hpp"
 #include "graph_source.hpp"
 #include "param_checker.hpp"
 #include "param_overrides.hpp"
@@ -31,13 +32,6 @@ const std::vector<std::string> kTopLevelKeys = {"kestrel",  "name",     "descrip
                                                 "duration", "on_error", "nodes",       "connections"};
 const std::vector<std::string> kNodeKeys = {"id", "type", "params", "description"};
 const std::vector<std::string> kConnectionKeys = {"from", "to", "policy", "delayed"};
-
-bool valid_id(const std::string& id) {
-  if (id.empty() || !(std::isalpha(static_cast<unsigned char>(id[0])) || id[0] == '_')) return false;
-  for (unsigned char c : id)
-    if (!(std::isalnum(c) || c == '_' || c == '-')) return false;
-  return true;
-}
 
 class Builder {
  public:
@@ -76,11 +70,38 @@ class Builder {
     int node = -1;
     int port = -1;
   };
-  std::optional<Endpoint> endpoint(const YAML::Node& n, bool output);
+  // A namespace: the graph's own, or a part's (graph_part.hpp). Files included with `file:` share
+  // their includer's.
+  struct Scope {
+    std::string prefix;                            // "" for the graph; "front/" in part 'front'
+    const GraphSource::Impl* part_file = nullptr;  // the part's file; null for the graph
+    const GraphSource::Impl* includer = nullptr;   // the file that included it
+    const GraphSource::Impl::Include* include = nullptr;
+    PartInterface part;
+    std::map<std::string, Scope*> parts;  // the parts included in it, by namespace
+    // Each declared port, resolved to its nodes' ports (empty where its binding is broken).
+    std::map<std::string, std::vector<Endpoint>> inputs, outputs;
+    std::string name() const { return prefix.empty() ? prefix : prefix.substr(0, prefix.size() - 1); }
+    std::string describe() const { return fmt::format("part '{}' ({})", name(), part_file->label); }
+  };
+  struct FileInScope {
+    const GraphSource::Impl* file;
+    Scope* scope;
+  };
+  void collect(const GraphSource::Impl& file, Scope& scope);
+  void resolve_part_ports(Scope& scope);
+  void apply_part_args(Scope& scope, const std::map<std::string, Override>& given);
+  void check_part_arg_bindings(const Scope& scope);
+  std::vector<Endpoint> endpoint(const YAML::Node& n, bool output);
+  std::vector<Endpoint> resolve(const Scope& scope, const std::string& node, const std::string& port, bool output,
+                                const YAML::Node& n);
 
   const GraphSource::Impl& src_;
-  const GraphSource::Impl* cur_;                 // the file being read: the graph or one it includes
-  std::vector<const GraphSource::Impl*> files_;  // included files depth-first, then the graph itself
+  const GraphSource::Impl* cur_;                // the file being read: the graph or one it includes
+  std::vector<FileInScope> files_;              // included files depth-first, then the graph itself
+  std::vector<std::unique_ptr<Scope>> scopes_;  // the graph's first
+  Scope* scope_ = nullptr;                      // the scope of the file being read
+  std::set<std::string> arg_override_nodes_;    // nodes an arg sets (their binding is checked as such)
   const Registry& registry_;
   Diagnostics diag_;
   YamlChecks yaml_;
@@ -98,23 +119,83 @@ class Builder {
   std::set<std::array<int, 4>> tapped_;                        // (tap node, tap input, node, output)
 };
 
+// `file` and what it includes, depth-first, each in its scope: a file's nodes join its includer's
+// scope; a part's take a namespace of its own, nested in its includer's.
+void Builder::collect(const GraphSource::Impl& file, Scope& scope) {
+  for (const auto& include : file.includes) {
+    const GraphSource::Impl& child = *include.source;
+    cur_ = &file;
+    if (include.part()) {
+      const YAML::Node part_node = include.entry["part"];
+      if (!is_part_file(child)) {
+        error(part_node, fmt::format("'{}' is a runnable graph, not a part (a part's file starts with 'part:'); a part "
+                                     "never includes a runnable graph",
+                                     part_node.Scalar()));
+        continue;
+      }
+      if (scope.parts.count(include.as)) {
+        error(include.entry["as"],
+              fmt::format("two parts are included as '{}': each needs a namespace of its own", include.as));
+        continue;
+      }
+      auto inner = std::make_unique<Scope>();
+      inner->prefix = scope.prefix + include.as + "/";
+      inner->part_file = &child;
+      inner->includer = &file;
+      inner->include = &include;
+      cur_ = &child;
+      if (!check_keys(child.root, part_file_keys(), "a part")) continue;
+      inner->part = read_part_interface(child, yaml_);
+      scope.parts[include.as] = inner.get();
+      Scope& next = *inner;
+      scopes_.push_back(std::move(inner));
+      collect(child, next);
+      continue;
+    }
+    if (scope.part_file) {
+      error(include.entry,
+            "a part includes only parts (with 'part:' and 'as:'), never a file whose nodes would join "
+            "its own");
+      continue;
+    }
+    if (is_part_file(child)) {
+      error(include.entry, "this file is a part: include it with 'part:' and 'as:', and connect to its ports");
+      continue;
+    }
+    cur_ = &child;
+    if (!child.root.IsMap()) {
+      diag_.error(at(child.root), "an included graph file must be a YAML map with 'nodes' and 'connections'");
+      continue;
+    }
+    if (check_keys(child.root, kTopLevelKeys, "the included graph")) collect(child, scope);
+  }
+  cur_ = &src_;
+  files_.push_back({&file, &scope});
+}
+
 // Every file's nodes, then every file's connections, so that a graph can connect to the nodes of
 // the graphs it includes.
 void Builder::read_fragments() {
   bool any_nodes = false;
-  for (const auto* file : files_) {
+  for (const auto& [file, scope] : files_) {
     cur_ = file;
+    scope_ = scope;
     const YAML::Node& root = file->root;
     if (root["nodes"]) any_nodes = true;
     read_nodes();
   }
   cur_ = &src_;
+  scope_ = scopes_.front().get();
   if (!any_nodes) diag_.error(at(src_.root), "the graph has no 'nodes' list");
-  for (const auto* file : files_) {
+  resolve_part_ports(*scopes_.front());
+  check_part_arg_bindings(*scopes_.front());
+  for (const auto& [file, scope] : files_) {
     cur_ = file;
+    scope_ = scope;
     read_connections();
   }
   cur_ = &src_;
+  scope_ = scopes_.front().get();
 }
 
 void Builder::read_nodes() {
@@ -138,12 +219,16 @@ void Builder::read_nodes() {
     auto id_text = scalar(id, "a node id");
     auto type_text = scalar(type, "a node type");
     if (!id_text || !type_text) continue;
-    config.id = *id_text;
-    if (!valid_id(config.id)) {
+    if (!valid_node_id(*id_text)) {
       error(id, fmt::format("node id '{}' must start with a letter or '_' and hold only letters, digits, '_' and '-'",
-                            config.id));
+                            *id_text));
       continue;
     }
+    if (scope_->parts.count(*id_text)) {
+      error(id, fmt::format("node id '{}' is also the namespace of an included part", *id_text));
+      continue;
+    }
+    config.id = scope_->prefix + *id_text;
     if (auto prior = node_index_.find(config.id); prior != node_index_.end()) {
       error(id, fmt::format("duplicate node id '{}' (first defined at {})", config.id,
                             earlier(g_.nodes[static_cast<std::size_t>(prior->second)].where)));
@@ -170,7 +255,7 @@ void Builder::read_nodes() {
 
 void Builder::check_overrides_name_nodes() {
   for (const auto& [node, params] : overrides_) {
-    if (node_index_.count(node)) continue;
+    if (node_index_.count(node) || arg_override_nodes_.count(node)) continue;
     for (const auto& [_, o] : params)
       diag_.error(o.where, fmt::format("no node '{}' in the graph{}", node, did_you_mean(node, [&] {
                                          std::vector<std::string> ids;
@@ -180,25 +265,65 @@ void Builder::check_overrides_name_nodes() {
   }
 }
 
-std::optional<Builder::Endpoint> Builder::endpoint(const YAML::Node& n, bool output) {
-  const char* direction = output ? "output" : "input";
+std::vector<Builder::Endpoint> Builder::endpoint(const YAML::Node& n, bool output) {
   auto text = scalar(n, output ? "'from'" : "'to'");
-  if (!text) return std::nullopt;
+  if (!text) return {};
   const auto dot = text->find('.');
   if (dot == std::string::npos || dot == 0 || dot + 1 == text->size()) {
     error(n, fmt::format("'{}' must be node.port", *text));
-    return std::nullopt;
+    return {};
   }
-  const std::string node = text->substr(0, dot);
-  const std::string port = text->substr(dot + 1);
-  auto it = node_index_.find(node);
-  if (it == node_index_.end()) {
+  return resolve(*scope_, text->substr(0, dot), text->substr(dot + 1), output, n);
+}
+
+// `node.port` as written in `scope`: a node of its own, or a port its included part declares.
+std::vector<Builder::Endpoint> Builder::resolve(const Scope& scope, const std::string& node, const std::string& port,
+                                                bool output, const YAML::Node& n) {
+  const char* direction = output ? "output" : "input";
+  const std::string text = node + "." + port;
+  if (const auto part = scope.parts.find(node); part != scope.parts.end()) {
+    const Scope& inner = *part->second;
+    const auto& declared = output ? inner.outputs : inner.inputs;
+    const auto it = declared.find(port);
+    if (it == declared.end()) {
+      const auto& ports = output ? inner.part.outputs : inner.part.inputs;
+      std::vector<std::string> names;
+      for (const auto& p : ports) names.push_back(p.name);
+      const bool other = output ? inner.part.input(port) != nullptr : inner.part.output(port) != nullptr;
+      error(n, fmt::format("{} has no {} '{}'{}{}; its ports: {}", inner.describe(), direction, port,
+                           did_you_mean(port, names),
+                           other ? fmt::format("; '{}' is an {}, and connections go from an output to an input", text,
+                                               output ? "input" : "output")
+                                 : "",
+                           inner.part.ports()));
+      return {};
+    }
+    return it->second;  // empty where the part's binding is broken (reported in its file)
+  }
+  // A node inside an included part is reached only through the part's ports.
+  if (const auto slash = node.find('/'); slash != std::string::npos) {
+    if (const auto part = scope.parts.find(node.substr(0, slash)); part != scope.parts.end()) {
+      // The input it meant is not also "not connected".
+      if (const auto inside = node_index_.find(scope.prefix + node); !output && inside != node_index_.end())
+        nodes_with_broken_inputs_.insert(inside->second);
+      error(n, fmt::format("'{}' is inside {}: a connection reaches a part only through its ports ({}), as "
+                           "'{}.PORT'",
+                           node, part->second->describe(), part->second->part.ports(), part->first));
+      return {};
+    }
+  }
+  auto it = node_index_.find(scope.prefix + node);
+  if (it == node_index_.end() || node.find('/') != std::string::npos) {
     std::vector<std::string> ids;
-    for (const auto& [k, _] : node_index_) ids.push_back(k);
-    error(n, fmt::format("no node '{}' in the graph{}", node, did_you_mean(node, ids)));
-    return std::nullopt;
+    for (const auto& [k, _] : node_index_)
+      if (k.rfind(scope.prefix, 0) == 0 && k.find('/', scope.prefix.size()) == std::string::npos)
+        ids.push_back(k.substr(scope.prefix.size()));
+    for (const auto& [k, _] : scope.parts) ids.push_back(k);
+    error(n, fmt::format("no node '{}' in the {}{}", node, scope.part_file ? scope.describe() : "graph",
+                         did_you_mean(node, ids)));
+    return {};
   }
-  if (!node_ok_[static_cast<std::size_t>(it->second)]) return std::nullopt;  // its type is already an error
+  if (!node_ok_[static_cast<std::size_t>(it->second)]) return {};  // its type is already an error
   const NodeSpec& spec = g_.nodes[static_cast<std::size_t>(it->second)].type->spec;
   const int index = output ? spec.output_index(port) : spec.input_index(port);
   if (index < 0) {
@@ -208,13 +333,104 @@ std::optional<Builder::Endpoint> Builder::endpoint(const YAML::Node& n, bool out
     if (!output) nodes_with_broken_inputs_.insert(it->second);
     std::string hint;
     if ((output ? spec.input_index(port) : spec.output_index(port)) >= 0)
-      hint = fmt::format("; '{}' is an {}, and connections go from an output to an input", *text,
+      hint = fmt::format("; '{}' is an {}, and connections go from an output to an input", text,
                          output ? "input" : "output");
     error(n, fmt::format("node '{}' ({}) has no {} '{}'{}{}; its {}s: {}", node, spec.type(), direction, port,
                          did_you_mean(port, names), hint, direction, names.empty() ? "none" : join(names)));
-    return std::nullopt;
+    return {};
   }
-  return Endpoint{it->second, index};
+  return {Endpoint{it->second, index}};
+}
+
+// Each part's declared ports, resolved to its nodes' ports (its own parts' first), with their
+// errors in the part's file.
+void Builder::resolve_part_ports(Scope& scope) {
+  for (auto& [_, inner] : scope.parts) resolve_part_ports(*inner);
+  if (!scope.part_file) return;
+  const GraphSource::Impl* saved = cur_;
+  cur_ = scope.part_file;
+  for (const bool output : {false, true})
+    for (const PartPort& port : output ? scope.part.outputs : scope.part.inputs) {
+      std::vector<Endpoint> resolved;
+      for (const PartBinding& b : port.bindings) {
+        const auto ends = resolve(scope, b.node, b.name, output, b.yaml);
+        for (const Endpoint& e : ends) {
+          const NodeSpec& spec = g_.nodes[static_cast<std::size_t>(e.node)].type->spec;
+          const std::string type = output ? spec.outputs()[static_cast<std::size_t>(e.port)].type()
+                                          : spec.inputs()[static_cast<std::size_t>(e.port)].type();
+          if (!port.type.empty() && type != "*" && type != port.type)
+            error(b.yaml, fmt::format("the part's {} '{}' is declared {}, but {}.{} is {}", output ? "output" : "input",
+                                      port.name, port.type, b.node, b.name, type));
+          resolved.push_back(e);
+        }
+      }
+      (output ? scope.outputs : scope.inputs)[port.name] = std::move(resolved);
+    }
+  cur_ = saved;
+}
+
+// Each arg of each part binds a parameter of its own nodes, or an arg of its own parts.
+void Builder::check_part_arg_bindings(const Scope& scope) {
+  for (const auto& [_, inner] : scope.parts) check_part_arg_bindings(*inner);
+  if (!scope.part_file) return;
+  const GraphSource::Impl* saved = cur_;
+  cur_ = scope.part_file;
+  for (const PartArg& arg : scope.part.args)
+    for (const PartBinding& b : arg.bindings) {
+      if (const auto part = scope.parts.find(b.node); part != scope.parts.end()) {
+        if (!part->second->part.arg(b.name))
+          error(b.yaml, fmt::format("arg '{}' sets arg '{}' of {}, which has no such arg; its args: {}", arg.name,
+                                    b.name, part->second->describe(), join(part->second->part.arg_names())));
+        continue;
+      }
+      if (!node_index_.count(scope.prefix + b.node))
+        error(b.yaml, fmt::format("arg '{}' sets '{}.{}', but {} has no node '{}'", arg.name, b.node, b.name,
+                                  scope.describe(), b.node));
+      // A parameter the node lacks is reported where the arg's value is, as any unknown parameter.
+    }
+  cur_ = saved;
+}
+
+// The values of a part's args (given by its include, or forwarded by the part around it, or their
+// defaults) become overrides of the parameters they bind; a value set nearer the top wins.
+void Builder::apply_part_args(Scope& scope, const std::map<std::string, Override>& given) {
+  std::map<std::string, std::map<std::string, Override>> forwarded;  // inner part -> arg -> value
+  if (scope.part_file) {
+    for (const auto& [name, value] : given)
+      if (!scope.part.arg(name))
+        diag_.error(value.where, fmt::format("{} has no arg '{}'{}; its args: {}", scope.describe(), name,
+                                             did_you_mean(name, scope.part.arg_names()),
+                                             scope.part.args.empty() ? "none" : join(scope.part.arg_names())));
+    for (const PartArg& arg : scope.part.args) {
+      Override value;
+      if (const auto it = given.find(arg.name); it != given.end()) {
+        value = it->second;
+      } else if (arg.default_value) {
+        value = Override{arg.default_value, scope.part_file->at(arg.default_value)};
+      } else {
+        diag_.error(scope.includer->at(scope.include->entry),
+                    fmt::format("{} needs arg '{}'{}", scope.describe(), arg.name,
+                                arg.description.empty() ? "" : " (" + arg.description + ")"));
+        continue;
+      }
+      for (const PartBinding& b : arg.bindings) {
+        if (scope.parts.count(b.node)) {
+          forwarded[b.node].emplace(b.name, value);
+        } else {
+          overrides_[scope.prefix + b.node].emplace(b.name, value);
+          arg_override_nodes_.insert(scope.prefix + b.node);
+        }
+      }
+    }
+  }
+  for (auto& [as, inner] : scope.parts) {
+    std::map<std::string, Override> values = forwarded[as];  // the part around it wins
+    const YAML::Node& args = inner->include->args;
+    if (args && args.IsMap())
+      for (auto it = args.begin(); it != args.end(); ++it)
+        values.emplace(it->first.Scalar(), Override{it->second, inner->includer->at(it->first)});
+    apply_part_args(*inner, values);
+  }
 }
 
 void Builder::read_connections() {
@@ -253,38 +469,45 @@ void Builder::read_connections() {
         ok = false;
       }
     }
-    auto source = endpoint(from, true);
-    auto target = endpoint(to, false);
-    if (target) attempted_inputs_.insert({target->node, target->port});
-    if (!source || !target || !ok) continue;
+    const auto sources = endpoint(from, true);
+    const auto targets = endpoint(to, false);
+    for (const Endpoint& target : targets) attempted_inputs_.insert({target.node, target.port});
+    if (sources.size() != 1 || targets.empty() || !ok) continue;
+    const Endpoint& source = sources.front();
     const auto& out_port =
-        g_.nodes[static_cast<std::size_t>(source->node)].type->spec.outputs()[static_cast<std::size_t>(source->port)];
-    const auto& in_port =
-        g_.nodes[static_cast<std::size_t>(target->node)].type->spec.inputs()[static_cast<std::size_t>(target->port)];
-    config.label = from.Scalar() + " -> " + to.Scalar();
-    if (in_port.type() != "*" && in_port.type() != out_port.type()) {
-      error(c, fmt::format("port type mismatch: {} is {}, but {} expects {}", from.Scalar(), out_port.type(),
-                           to.Scalar(), in_port.type()));
-      continue;
-    }
-    const auto key = std::make_pair(target->node, target->port);
-    if (in_port.tap) {
-      // A tap takes any number of connections, each output once.
-      if (!tapped_.insert({target->node, target->port, source->node, source->port}).second) {
-        error(c, fmt::format("{} is already connected to {}", from.Scalar(), to.Scalar()));
+        g_.nodes[static_cast<std::size_t>(source.node)].type->spec.outputs()[static_cast<std::size_t>(source.port)];
+    // An input of a part may feed several of its nodes: one connection each.
+    for (const Endpoint& target : targets) {
+      ConnectionConfig one = config;
+      const NodeConfig& to_node = g_.nodes[static_cast<std::size_t>(target.node)];
+      const auto& in_port = to_node.type->spec.inputs()[static_cast<std::size_t>(target.port)];
+      one.label = fmt::format("{}.{} -> {}.{}", g_.nodes[static_cast<std::size_t>(source.node)].id, out_port.name,
+                              to_node.id, in_port.name);
+      if (in_port.type() != "*" && in_port.type() != out_port.type()) {
+        error(c, fmt::format("port type mismatch: {} is {}, but {} expects {}", from.Scalar(), out_port.type(),
+                             targets.size() > 1 ? fmt::format("{} ({})", to.Scalar(), one.label) : to.Scalar(),
+                             in_port.type()));
         continue;
       }
-    } else if (auto prior = input_taken_.find(key); prior != input_taken_.end()) {
-      error(to, fmt::format("input {} is already connected ({}); an input takes one connection", to.Scalar(),
-                            earlier(prior->second)));
-      continue;
+      const auto key = std::make_pair(target.node, target.port);
+      if (in_port.tap) {
+        // A tap takes any number of connections, each output once.
+        if (!tapped_.insert({target.node, target.port, source.node, source.port}).second) {
+          error(c, fmt::format("{} is already connected to {}", from.Scalar(), to.Scalar()));
+          continue;
+        }
+      } else if (auto prior = input_taken_.find(key); prior != input_taken_.end()) {
+        error(to, fmt::format("input {} is already connected ({}); an input takes one connection", to.Scalar(),
+                              earlier(prior->second)));
+        continue;
+      }
+      input_taken_[key] = one.where;
+      one.from_node = source.node;
+      one.from_port = source.port;
+      one.to_node = target.node;
+      one.to_port = target.port;
+      g_.connections.push_back(std::move(one));
     }
-    input_taken_[key] = config.where;
-    config.from_node = source->node;
-    config.from_port = source->port;
-    config.to_node = target->node;
-    config.to_port = target->port;
-    g_.connections.push_back(std::move(config));
   }
 }
 
@@ -396,21 +619,14 @@ BuildResult Builder::build(const std::vector<std::string>& overrides, const std:
   add_command_line_overrides(overrides, overrides_, diag_);
   add_include_overrides(src_, overrides_, diag_);
   // Included graphs contribute nodes and connections; their header (executor, seed, ...) is the
-  // including graph's to choose.
-  std::function<void(const GraphSource::Impl&)> collect = [&](const GraphSource::Impl& file) {
-    for (const auto& include : file.includes) collect(*include.source);
-    if (&file != &src_) {
-      cur_ = &file;
-      if (!file.root.IsMap())
-        diag_.error(at(file.root), "an included graph file must be a YAML map with 'nodes' and 'connections'");
-      else if (check_keys(file.root, kTopLevelKeys, "the included graph"))
-        files_.push_back(&file);
-      cur_ = &src_;
-      return;
-    }
-    files_.push_back(&file);
-  };
-  collect(src_);
+  // including graph's to choose. Parts take a namespace of their own.
+  scopes_.push_back(std::make_unique<Scope>());
+  scope_ = scopes_.front().get();
+  if (is_part_file(src_))
+    diag_.error(at(src_.root),
+                "this file is a part, not a runnable graph: a graph includes it with 'part:' and "
+                "'as:' (`kestrel inspect` prints its ports and args)");
+  collect(src_, *scope_);
   // Fragments from the command line (`kestrel run --record`) add nodes and connections as an
   // included file would.
   for (const GraphSource* fragment : fragments) {
@@ -419,9 +635,10 @@ BuildResult Builder::build(const std::vector<std::string>& overrides, const std:
     if (!file.root.IsMap())
       diag_.error(at(file.root), "a graph fragment must be a YAML map with 'nodes' and 'connections'");
     else if (check_keys(file.root, {"nodes", "connections"}, "a graph fragment"))
-      files_.push_back(&file);
+      files_.push_back({&file, scopes_.front().get()});
     cur_ = &src_;
   }
+  apply_part_args(*scopes_.front(), {});
   read_fragments();
   check_overrides_name_nodes();
   connect_taps();

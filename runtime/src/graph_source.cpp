@@ -4,6 +4,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "yaml_checks.hpp"
+
 namespace kestrel {
 
 GraphSource::GraphSource(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -66,24 +68,59 @@ void read_includes(GraphSource::Impl& impl, std::vector<std::filesystem::path>& 
   }
   for (const auto& entry : list) {
     // Never assign to a YAML::Node: it would write through to the document. Fresh handles only.
-    const YAML::Node file_node = entry.IsMap() ? entry["file"] : entry;
-    const YAML::Node set = entry.IsMap() ? entry["set"] : YAML::Node(YAML::NodeType::Undefined);
+    const bool is_part = entry.IsMap() && entry["part"];
+    const YAML::Node file_node = !entry.IsMap() ? entry : is_part ? entry["part"] : entry["file"];
+    const YAML::Node set = entry.IsMap() && !is_part ? entry["set"] : YAML::Node(YAML::NodeType::Undefined);
+    const YAML::Node args = is_part ? entry["args"] : YAML::Node(YAML::NodeType::Undefined);
+    std::string as;
     if (entry.IsMap()) {
+      const std::vector<std::string> keys =
+          is_part ? std::vector<std::string>{"part", "as", "args"} : std::vector<std::string>{"file", "set"};
       for (auto it = entry.begin(); it != entry.end(); ++it)
-        if (it->first.Scalar() != "file" && it->first.Scalar() != "set")
+        if (std::find(keys.begin(), keys.end(), it->first.Scalar()) == keys.end())
           impl.read_errors.error(impl.at(it->first),
-                                 "unknown key '" + it->first.Scalar() + "' in an include; keys: file, set");
+                                 "unknown key '" + it->first.Scalar() +
+                                     "' in an include; keys: " + (is_part ? "part, as, args" : "file, set") +
+                                     " (a file's nodes join the graph's; a part's take a namespace)");
       if (!file_node) {
-        impl.read_errors.error(impl.at(entry), "an include needs 'file'");
+        impl.read_errors.error(impl.at(entry),
+                               "an include needs 'file' (nodes that join the graph's) or 'part' (with 'as')");
         continue;
       }
       if (set && !set.IsMap()) {
         impl.read_errors.error(impl.at(set), "an include's 'set' must be a map of node.param: value");
         continue;
       }
+      if (is_part) {
+        const YAML::Node as_node = entry["as"];
+        if (!as_node || !as_node.IsScalar() || !valid_node_id(as_node.Scalar())) {
+          impl.read_errors.error(impl.at(as_node ? as_node : entry),
+                                 "a part's include needs 'as': its namespace, a name that starts with a letter or '_' "
+                                 "and holds only letters, digits, '_' and '-'");
+          continue;
+        }
+        as = as_node.Scalar();
+        if (args && !args.IsMap()) {
+          impl.read_errors.error(impl.at(args), "a part's 'args' must be a map of name: value");
+          continue;
+        }
+        // A part is found beside or below the file that includes it.
+        if (file_node.IsScalar()) {
+          const std::filesystem::path relative = file_node.Scalar();
+          if (relative.is_absolute() ||
+              std::any_of(relative.begin(), relative.end(), [](const auto& piece) { return piece == ".."; })) {
+            impl.read_errors.error(impl.at(file_node),
+                                   "a part is included from the includer's folder or below it, not '" +
+                                       file_node.Scalar() + "' (no absolute path, no '..')");
+            continue;
+          }
+        }
+      }
     }
     if (!file_node.IsScalar() || file_node.Scalar().empty()) {
-      impl.read_errors.error(impl.at(file_node), "an include is a graph file name, or a map with 'file' and 'set'");
+      impl.read_errors.error(
+          impl.at(file_node),
+          "an include is a graph file name, or a map with 'file' and 'set', or 'part', 'as' and 'args'");
       continue;
     }
     std::filesystem::path path = file_node.Scalar();
@@ -120,7 +157,7 @@ void read_includes(GraphSource::Impl& impl, std::vector<std::filesystem::path>& 
     read_includes(*child, chain);
     chain.pop_back();
     impl.read_errors.append(child->read_errors);  // the outermost file holds every reading error
-    impl.includes.push_back({std::move(child), set});
+    impl.includes.push_back({std::move(child), set, entry, as, args});
   }
 }
 

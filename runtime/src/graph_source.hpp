@@ -16,10 +16,16 @@ struct GraphSource::Impl {
   YAML::Node root;
   Diagnostics read_errors;  // reading, YAML syntax and include entries, of this file and those it includes
 
-  /// One entry of this file's `include:` list, already read (recursively).
+  /// One entry of this file's `include:` list, already read (recursively): a file whose nodes
+  /// join the includer's (`file:`, with `set:`), or a part under a namespace of its own (`part:`,
+  /// `as:`, `args:`; graph_part.hpp).
   struct Include {
     std::unique_ptr<Impl> source;
-    YAML::Node set;  // the entry's `set:` map of node.param: value, or an invalid node
+    YAML::Node set;    // the entry's `set:` map of node.param: value, or an invalid node
+    YAML::Node entry;  // the entry itself, where errors about it point
+    std::string as;    // a part's namespace; empty for a file
+    YAML::Node args;   // a part's `args:` map, or an invalid node
+    bool part() const { return !as.empty(); }
   };
   std::vector<Include> includes;
 

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -71,13 +72,26 @@ Time Context::now() const { return rt_.run->executor->now(); }
 const std::string& Context::id() const { return rt_.id(); }
 Logger& Context::log() { return *rt_.logger; }
 std::mt19937_64& Context::rng() { return rt_.rng; }
+namespace {
+// The namespace of a node in a part ("front/" for "front/depth"; "" for a node of the graph's own):
+// what it reports and the files it writes take it, so that a part included twice reports twice.
+std::string node_namespace(const std::string& id) {
+  const auto slash = id.rfind('/');
+  return slash == std::string::npos ? std::string() : id.substr(0, slash + 1);
+}
+}  // namespace
+
 void Context::set_report_section(const std::string& key, const ReportSection& section) {
-  rt_.run->report.set_section(rt_.id(), key, section);
+  const std::string ns = node_namespace(rt_.id());
+  // A node that reports under its own id (already namespaced) keeps it.
+  rt_.run->report.set_section(rt_.id(), key.starts_with(ns) ? key : ns + key, section);
 }
 nlohmann::json Context::run_description() const { return detail::run_description(rt_.run->graph, rt_.run->options); }
 bool Context::keeps_artifacts() const { return rt_.run->report.keeps_artifacts(); }
 void Context::add_artifact(const std::string& file_name, std::string_view bytes, std::string caption) {
-  rt_.run->report.add_artifact(rt_.id(), file_name, bytes, std::move(caption));
+  std::string prefix = node_namespace(rt_.id());
+  std::replace(prefix.begin(), prefix.end(), '/', '-');
+  rt_.run->report.add_artifact(rt_.id(), prefix + file_name, bytes, std::move(caption));
 }
 void Context::end_of_stream() { rt_.source_ended = true; }
 void Context::request_stop() { rt_.run->stop_requested = true; }

@@ -4,10 +4,18 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <set>
 
 namespace kestrel {
+
+bool valid_node_id(const std::string& id) {
+  if (id.empty() || !(std::isalpha(static_cast<unsigned char>(id[0])) || id[0] == '_')) return false;
+  for (unsigned char c : id)
+    if (!(std::isalnum(c) || c == '_' || c == '-')) return false;
+  return true;
+}
 
 std::string join(const std::vector<std::string>& items) { return fmt::format("{}", fmt::join(items, ", ")); }
 

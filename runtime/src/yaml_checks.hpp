@@ -15,6 +15,9 @@ namespace kestrel {
 /// Where a YAML node is, in the file being read.
 using Locate = std::function<SourceLocation(const YAML::Node&)>;
 
+/// A node id or a part's namespace: a letter or '_', then letters, digits, '_' and '-'.
+bool valid_node_id(const std::string& id);
+
 /// "a, b, c".
 std::string join(const std::vector<std::string>& items);
 /// " (did you mean 'x'?)" for the nearest candidate, or "" if none is near.

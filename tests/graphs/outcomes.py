@@ -146,6 +146,14 @@ OUTCOMES = {
     "paper_tracking": (2.0, DETECTION + TRACKING + ONE_TARGET),
     # The same contract as the Kalman tracker (docs/tracking.md).
     "paper_tracking_particle": (2.0, DETECTION + TRACKING + ONE_TARGET),
+    # Both trackers of the A/B, each scored in its own namespace, to the paper's contract.
+    "ab_trackers": (2.0, DETECTION + [
+        (f"r['{name}/tracking']['frames'] == frames and r['{name}/tracking']['mota'] >= 0.999", f"{name}: every frame scored, MOTA above 0.999")
+        for name in ("kalman", "particle")
+    ] + [
+        (f"r['{name}/tracking']['idsw'] == 0 and 0 < r['{name}/tracking']['rmse_m'] <= {TRACK_BOUND_M:.3f}", f"{name}: one identity, no worse than the detections")
+        for name in ("kalman", "particle")
+    ]),
     # Poisson clutter, 0.5 false detections a frame in a 192 m^3 box: a false track is confirmed
     # when a second false alarm falls within the 1 m gate of the first in the next frame, about
     # 0.5 * 4.19 / 192 = 1 % of false alarms, so 0.3 expected in 60 frames; allow two. Each is

@@ -3,9 +3,11 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 
 #include "commands.hpp"
 #include "kestrel/runtime/diagnostics.hpp"
+#include "kestrel/runtime/graph.hpp"
 #include "kestrel/runtime/plugin_host.hpp"
 
 namespace kestrel::cli {
@@ -93,6 +95,45 @@ void print_message(const MessageTypeEntry& message) {
                 f.description.c_str());
 }
 
+// A part's interface: its ports, each with the node ports it is, and its args, each with the
+// parameters it sets.
+int inspect_part(const std::filesystem::path& file, const Registry& registry) {
+  const GraphSource source = GraphSource::from_file(file);
+  Diagnostics diagnostics;
+  const auto part = part_info(source, registry, diagnostics);
+  if (diagnostics.has_errors()) {
+    std::fputs(diagnostics.str().c_str(), stderr);
+    return kInvalidGraph;
+  }
+  if (!part) {
+    std::fprintf(stderr, "%s is a runnable graph, not a part: `kestrel validate` or `kestrel dot` it\n",
+                 file.string().c_str());
+    return kUsage;
+  }
+  std::printf("Part %s (%s)\n", part->name.c_str(), file.string().c_str());
+  if (!part->description.empty()) std::printf("  %s\n", part->description.c_str());
+  const auto ports = [](const char* title, const std::vector<PartInfo::Port>& list) {
+    std::printf("\n%s:\n", title);
+    if (list.empty()) std::printf("    none\n");
+    for (const auto& p : list)
+      std::printf("    %-22s %-26s %s\n%s", p.name.c_str(), p.type.empty() ? "-" : p.type.c_str(),
+                  fmt::format("{}", fmt::join(p.bound, ", ")).c_str(),
+                  p.description.empty() ? "" : fmt::format("      {}\n", p.description).c_str());
+  };
+  ports("Inputs", part->inputs);
+  ports("Outputs", part->outputs);
+  std::printf("\nArgs:\n");
+  if (part->args.empty()) std::printf("    none\n");
+  for (const auto& a : part->args)
+    std::printf("    %-22s %-26s sets %s\n%s", a.name.c_str(),
+                (a.default_value.empty() ? std::string("(required)")
+                                         : "default " + a.default_value + (a.unit.empty() ? "" : " " + a.unit))
+                    .c_str(),
+                fmt::format("{}", fmt::join(a.bound, ", ")).c_str(),
+                a.description.empty() ? "" : fmt::format("      {}\n", a.description).c_str());
+  return kOk;
+}
+
 }  // namespace
 
 int plugins_command() {
@@ -124,6 +165,10 @@ int plugins_command() {
 int inspect_command(const std::string& name) {
   auto host = load_plugins();
   const Registry& registry = host->registry();
+  // A YAML file: a part's interface.
+  std::error_code ec;
+  if ((name.ends_with(".yaml") || name.ends_with(".yml")) && std::filesystem::is_regular_file(name, ec))
+    return inspect_part(name, registry);
   if (const NodeType* type = registry.find_node(name)) {
     inspect_node(*type, registry);
     return kOk;

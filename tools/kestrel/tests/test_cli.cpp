@@ -349,6 +349,57 @@ connections:
   EXPECT_THAT(out, HasSubstr("\"src\":out_out -> \"sink\":in_in"));
 }
 
+// A part: inspect prints its interface; a graph that connects past its ports is invalid (exit 3,
+// at the connection, naming the ports); one that includes it twice validates.
+TEST(Cli, APartIsInspectedAndReachedOnlyThroughItsPorts) {
+  const fs::path dir = temp_dir("part");
+  ::setenv("KESTREL_PLUGIN_PATH", KESTREL_TEST_PLUGIN_DIR, 1);
+  fs::create_directories(dir / "parts");
+  std::ofstream(dir / "parts" / "scaler.yaml") << R"(part: scaler
+description: multiplies each number by a factor
+inputs: {numbers: scale.in}
+outputs: {scaled: scale.out}
+args:
+  factor: {default: 2.0, unit: x, description: the gain, to: scale.factor}
+nodes:
+  - {id: scale, type: scale}
+)";
+  std::string out;
+  EXPECT_EQ(run_cli({"inspect", (dir / "parts" / "scaler.yaml").string()}, &out), 0);
+  EXPECT_THAT(out, HasSubstr("Part scaler ("));
+  EXPECT_THAT(out, HasSubstr("    numbers                test.Number                scale.in\n"));
+  EXPECT_THAT(out,
+              HasSubstr("    factor                 default 2.0 x              sets scale.factor\n      the gain"));
+  const fs::path into = write_graph(dir, R"(include:
+  - {part: parts/scaler.yaml, as: front}
+nodes:
+  - {id: src, type: counter_source}
+connections:
+  - {from: src.out, to: front/scale.in}
+)");
+  EXPECT_EQ(run_cli({"validate", into.string()}, &out), 3);
+  EXPECT_THAT(out, HasSubstr("graph.yaml:7:25: error: 'front/scale' is inside part 'front'"));
+  EXPECT_THAT(out, HasSubstr("through its ports (inputs: numbers; outputs: scaled)"));
+  EXPECT_EQ(run_cli({"inspect", into.string()}, &out), 2);
+  EXPECT_THAT(out, HasSubstr("is a runnable graph, not a part"));
+  const fs::path twice = write_graph(dir, R"(include:
+  - {part: parts/scaler.yaml, as: a}
+  - {part: parts/scaler.yaml, as: b, args: {factor: 3.0}}
+nodes:
+  - {id: src, type: counter_source, params: {count: 3}}
+  - {id: sink_a, type: collector}
+  - {id: sink_b, type: collector}
+connections:
+  - {from: src.out, to: a.numbers}
+  - {from: src.out, to: b.numbers}
+  - {from: a.scaled, to: sink_a.in}
+  - {from: b.scaled, to: sink_b.in}
+)");
+  EXPECT_EQ(run_cli({"validate", twice.string()}, &out), 0);
+  EXPECT_EQ(run_cli({"run", twice.string(), "--set", "b/scale.factor=5", "--no-progress"}, &out), 0);
+  ::unsetenv("KESTREL_PLUGIN_PATH");
+}
+
 TEST(Cli, MotComputesClearMotOnMotChallengeFiles) {
   const fs::path dir = temp_dir("mot");
   // Two objects, three frames. The tracker adds a false positive (frame 1), misses object 2

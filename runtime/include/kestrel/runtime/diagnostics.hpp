@@ -33,6 +33,7 @@ class Diagnostics {
   std::string str() const;
 
  private:
+  void add(Diagnostic::Severity severity, SourceLocation where, std::string message);
   std::vector<Diagnostic> items_;
 };
 

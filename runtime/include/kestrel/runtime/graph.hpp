@@ -108,6 +108,25 @@ BuildResult build_graph(const GraphSource& source, const Registry& registry,
                         const std::vector<const GraphSource*>& fragments = {},
                         std::optional<ExecutorKind> executor = {});
 
+/// A part's interface (docs/graph-format.md, "Parts"), as `kestrel inspect FILE` prints it.
+struct PartInfo {
+  struct Port {
+    std::string name, type, description;  ///< type: declared, or the bound node port's ("" if neither is known)
+    std::vector<std::string> bound;       ///< the node ports it is ("node.port")
+  };
+  struct Arg {
+    std::string name, default_value, unit, description;  ///< default_value: YAML text, "" if required
+    std::vector<std::string> bound;                      ///< the parameters it sets ("node.param")
+  };
+  std::string name, description;
+  std::vector<Port> inputs, outputs;
+  std::vector<Arg> args;
+};
+
+/// The interface `source` declares, if its file is a part; its malformed declarations go in
+/// `diagnostics`. Port types not declared are read from the node types in `registry`.
+std::optional<PartInfo> part_info(const GraphSource& source, const Registry& registry, Diagnostics& diagnostics);
+
 /// The graph in Graphviz dot.
 std::string to_dot(const GraphConfig& graph);
 
