@@ -36,7 +36,6 @@ NodeSpec AimPlannerNode::spec() {
           "capture_radius_m), or capture_value (the chance of a capture now on the target's futures against what "
           "keeping the net is worth, the planner's best later launch)");
   c.component("search", &C::search, "search", "hold")
-      .renamed_from("when_lost")
       .describe(
           "where the hunter goes once the target is lost (nothing seen for target_timeout_s): hold, turn, or "
           "back_off (to a standoff facing where it was last seen, from where the wider view finds it again)");

@@ -125,7 +125,15 @@ class DdsBridgeNode final : public Node {
         .output(kTracks, "tracks read from tracks_topic")
         .output(kState, "vehicle states read from state_topic")
         .output(kImu, "inertial measurements read from imu_topic")
-        .config(std::move(c));
+        .config(std::move(c))
+        .needs_executor_when(
+            ExecutorNeed::realtime, "it subscribes to DDS topics (what arrives is not in lockstep)",
+            [](const Params& p) {
+              for (const char* topic : {"frame_topic", "truth_topic", "cloud_topic", "detections_topic", "tracks_topic",
+                                        "state_topic", "imu_topic"})
+                if (p.contains(topic) && !p.get<std::string>(topic).empty()) return true;
+              return false;
+            });
   }
 
   explicit DdsBridgeNode(NodeInit& init)
@@ -137,8 +145,6 @@ class DdsBridgeNode final : public Node {
     if (!cfg_.prefix.empty()) dds::ros2_dds_topic(cfg_.prefix);  // refused now, not at the first message
     auto ports = subscribed_ports(cfg_);
     if (!ports.empty()) {
-      if (!init.realtime())
-        throw Error("subscribing to DDS topics needs the realtime executor (what arrives is not in lockstep)");
       subscription_ = std::make_unique<DdsSubscription>(participant_, qos_, std::move(ports));
       init.set_rate(cfg_.poll_rate_hz);
     }

@@ -86,13 +86,8 @@ class IntruderNode final : public Node {
     c.param("period_s", &C::period_s).with_unit("s").range(0.5, 3600.0).describe("figure8: time for one loop");
     c.param("line_start_m", &C::line_start_m).with_unit("m").describe("line: start (world)");
     c.param("line_end_m", &C::line_end_m).with_unit("m").describe("line: end (world)");
-    c.param("speed_m_s", &C::speed_m_s)
-        .renamed_from("speed_mps")
-        .with_unit("m/s")
-        .range(0.0, 100.0)
-        .describe("line: speed");
+    c.param("speed_m_s", &C::speed_m_s).with_unit("m/s").range(0.0, 100.0).describe("line: speed");
     c.param("line_acceleration_m_s2", &C::line_acceleration_m_s2)
-        .renamed_from("line_acceleration_mps2")
         .with_unit("m/s^2")
         .range(0.0, 1000.0)
         .describe(
@@ -105,13 +100,8 @@ class IntruderNode final : public Node {
         .with_unit("m")
         .range(0.0, 100.0)
         .describe("random and jink: half size of that box (jink: it turns back when outside)");
-    c.param("max_speed_m_s", &C::max_speed_m_s)
-        .renamed_from("max_speed_mps")
-        .with_unit("m/s")
-        .range(0.0, 100.0)
-        .describe("random: speed limit");
+    c.param("max_speed_m_s", &C::max_speed_m_s).with_unit("m/s").range(0.0, 100.0).describe("random: speed limit");
     c.param("max_acceleration_m_s2", &C::max_acceleration_m_s2)
-        .renamed_from("max_acceleration_mps2")
         .with_unit("m/s^2")
         .range(0.0, 1000.0)
         .describe("random: acceleration limit; 0: only the box and the speed bound it");

@@ -109,11 +109,7 @@ class MavlinkSink final : public Node {
     c.param("retries", &C::retries).range(0, 20).describe("re-sends of a command that had no answer");
     c.param("fence_min_m", &C::fence_min_m).with_unit("m").describe("geofence box, lower corner (world ENU)");
     c.param("fence_max_m", &C::fence_max_m).with_unit("m").describe("geofence box, upper corner (world ENU)");
-    c.param("max_speed_m_s", &C::max_speed_m_s)
-        .renamed_from("max_speed_mps")
-        .with_unit("m/s")
-        .range(0.1, 50.0)
-        .describe("speed limit");
+    c.param("max_speed_m_s", &C::max_speed_m_s).with_unit("m/s").range(0.1, 50.0).describe("speed limit");
     c.param("max_tilt_deg", &C::max_tilt_deg).with_unit("deg").range(5.0, 80.0).describe("tilt limit");
     c.rule("fence_min_m < fence_max_m", {"fence_min_m", "fence_max_m"},
            [](const C& config) { return (config.fence_min_m.array() < config.fence_max_m.array()).all(); });

@@ -71,6 +71,14 @@ class McapSourceNode final : public Node {
         .describe(
             "how often the node publishes what was logged since its last tick; 0: the busiest replayed "
             "channel's recorded rate, so that ticks fall on the logged times");
+    c.requirement("some port has a topic: frame_topic (or left_topic, ...), truth_topic, ... name what to replay",
+                  {"frame_topic", "left_topic", "truth_topic", "cloud_topic", "detections_topic", "tracks_topic",
+                   "state_topic", "imu_topic"},
+                  [](const C& k) {
+                    return !(k.frame_topic + k.left_topic + k.truth_topic + k.cloud_topic + k.detections_topic +
+                             k.tracks_topic + k.state_topic + k.imu_topic)
+                                .empty();
+                  });
     return NodeSpec("mcap_source", "Replays channels of an MCAP recording or ROS 2 bag on its ports")
         .details(
             "Each port with a topic publishes the kestrel messages rebuilt from that topic's ROS 2 messages "
@@ -130,8 +138,7 @@ class McapSourceNode final : public Node {
     add("tracks", MessageTraits<msg::Tracks>::name, c.tracks_topic);
     add("state", MessageTraits<msg::VehicleState>::name, c.state_topic);
     add("imu", MessageTraits<msg::Imu>::name, c.imu_topic);
-    if (out.empty()) throw Error("no port has a topic: set frame_topic, truth_topic, ... to what to replay");
-    return out;
+    return out;  // not empty: the spec's rule
   }
 
   template <class T>

@@ -580,9 +580,9 @@ void Builder::check_executor_needs(bool executor_from_command_line) {
   for (std::size_t i = 0; i < g_.nodes.size(); ++i) {
     if (!node_ok_[i]) continue;
     const NodeSpec& spec = g_.nodes[i].type->spec;
-    if (spec.executor_need() == ExecutorNeed::any) continue;
-    const ExecutorKind needed =
-        spec.executor_need() == ExecutorNeed::realtime ? ExecutorKind::realtime : ExecutorKind::lockstep;
+    const ExecutorNeed need = spec.executor_need(g_.nodes[i].params);
+    if (need == ExecutorNeed::any) continue;
+    const ExecutorKind needed = need == ExecutorNeed::realtime ? ExecutorKind::realtime : ExecutorKind::lockstep;
     if (needed == g_.executor) continue;
     diag_.error(
         type_where_[i],

@@ -118,13 +118,6 @@ std::optional<Params> ParamChecker::check(const YAML::Node& params, const ParamS
   for (const auto& s : specs) names.push_back(s.name);
   auto find_spec = [&](const std::string& name) { return set.find(name); };
   auto unknown = [&](const SourceLocation& where, const std::string& name) {
-    for (const auto& s : specs)
-      for (const auto& former : s.former_names)
-        if (former == name) {
-          diag_.error(where, fmt::format("{}: unknown parameter '{}' (did you mean '{}'? '{}' was renamed '{}')", owner,
-                                         name, s.name, name, s.name));
-          return;
-        }
     diag_.error(where, fmt::format("{}: unknown parameter '{}'{}; parameters: {}", owner, name,
                                    did_you_mean(name, names), names.empty() ? "none" : join(names)));
   };

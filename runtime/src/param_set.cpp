@@ -109,12 +109,12 @@ std::vector<std::string> check_param_set(const ParamSet& set) {
         problems.push_back(fmt::format("rule '{}' names an undeclared parameter '{}'", rule.text, name));
   }
   // The defaults themselves must satisfy the rules; otherwise every graph that leaves them alone
-  // would be invalid.
+  // would be invalid. A requirement is the exception: the graph must choose.
   if (problems.empty() && all_defaults && set.make_config) {
     Params defaults;
     for (const auto& p : set.params) defaults.set(p.name, *p.default_value);
     for (const ParamRule* rule : set.broken_rules(defaults))
-      problems.push_back(fmt::format("the defaults break the rule '{}'", rule->text));
+      if (!rule->defaults_may_break) problems.push_back(fmt::format("the defaults break the rule '{}'", rule->text));
   }
   return problems;
 }

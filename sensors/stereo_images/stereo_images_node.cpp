@@ -36,26 +36,12 @@ struct StereoImagesConfig {
 
 namespace {
 
+// The one calibration given (the spec's rules hold: exactly one, and each whole).
 std::pair<calibration::CameraInfo, calibration::CameraInfo> calibration_of(const StereoImagesConfig& c) {
-  const int given = !c.opencv_calibration.empty() + !c.middlebury_calibration.empty() +
-                    (!c.left_info.empty() || !c.right_info.empty());
-  if (given > 1)
-    throw Error("give one calibration: left_info and right_info, opencv_calibration or middlebury_calibration");
-  if (!c.middlebury_calibration.empty()) {
-    if (c.images != StereoImagesConfig::Images::raw)
-      throw Error(
-          "middlebury_calibration moves the right image by doffs (so that disparity gives depth): leave images: raw");
+  if (!c.middlebury_calibration.empty())
     return calibration::load_middlebury_calibration(c.middlebury_calibration).camera_infos();
-  }
-  if (!c.opencv_calibration.empty()) {
-    if (!c.left_info.empty() || !c.right_info.empty())
-      throw Error("give either left_info and right_info or opencv_calibration, not both");
+  if (!c.opencv_calibration.empty())
     return calibration::camera_infos(calibration::load_opencv_stereo(c.opencv_calibration));
-  }
-  if (c.left_info.empty() || c.right_info.empty())
-    throw Error(
-        "no calibration: give left_info and right_info (ROS camera_info files), opencv_calibration or "
-        "middlebury_calibration");
   return {calibration::load_camera_info(c.left_info), calibration::load_camera_info(c.right_info)};
 }
 
@@ -108,6 +94,20 @@ class StereoImagesNode final : public Node {
     c.param("fps", &C::fps).with_unit("Hz").range(0.1, 1000.0).describe("frames a second: the pairs' times");
     c.param("color", &C::color).describe("publish BGR images instead of 8-bit grey");
     sensors::declare_camera_mount(c, &C::mount_frame, &C::mount_position_m, &C::mount_rpy_deg);
+    c.requirement("exactly one calibration: left_info and right_info, opencv_calibration or middlebury_calibration",
+                  {"left_info", "right_info", "opencv_calibration", "middlebury_calibration"}, [](const C& k) {
+                    return !k.opencv_calibration.empty() + !k.middlebury_calibration.empty() +
+                               (!k.left_info.empty() || !k.right_info.empty()) ==
+                           1;
+                  });
+    c.rule("left_info and right_info together", {"left_info", "right_info"},
+           [](const C& k) { return k.left_info.empty() == k.right_info.empty(); });
+    c.rule("middlebury_calibration with images: raw (it moves the right image by doffs, so that disparity gives depth)",
+           {"middlebury_calibration", "images"},
+           [](const C& k) { return k.middlebury_calibration.empty() || k.images == C::Images::raw; });
+    c.requirement("left and right, or video", {"left", "right", "video"}, [](const C& k) {
+      return k.video.empty() ? !k.left.empty() && !k.right.empty() : k.left.empty() && k.right.empty();
+    });
     return NodeSpec("stereo_images", "Stereo pairs from image folders, numbered files or a side-by-side video")
         .details(
             "Publishes one pair every 1/fps s, from time 0, as rectified StereoFrames: raw pairs are rectified with "

@@ -294,26 +294,3 @@ duration: 2.0
   EXPECT_EQ(failed.outcome, RunOutcome::failed);
   EXPECT_THAT(failed.errors.at(0), ::testing::HasSubstr("node 'i' (intruder): could not start: cannot open"));
 }
-
-// The parameters renamed to the unit convention (_m_s, _m_s2) are refused under their old names,
-// with the new one, at the old name's place: never silently left at their defaults.
-TEST(IntruderNode, ParametersRenamedToTheUnitConventionAreRefusedUnderTheirOldNames) {
-  const std::vector<std::pair<std::string, std::string>> renamed = {
-      {"speed_mps", "speed_m_s"},
-      {"line_acceleration_mps2", "line_acceleration_m_s2"},
-      {"max_speed_mps", "max_speed_m_s"},
-      {"max_acceleration_mps2", "max_acceleration_m_s2"}};
-  for (const auto& [old_name, new_name] : renamed) {
-    const std::string yaml = "nodes:\n  - {id: intruder, type: intruder, params: {" + old_name + ": 2.0}}\n";
-    const auto built =
-        build_graph(GraphSource::from_string(yaml, "old.yaml"), kestrel::testing::built_plugins().registry());
-    EXPECT_FALSE(built.graph) << old_name;
-    EXPECT_THAT(
-        built.diagnostics.str(),
-        ::testing::HasSubstr("old.yaml:2:45: error: node 'intruder' (intruder): unknown parameter '" + old_name +
-                             "' (did you mean '" + new_name + "'? '" + old_name + "' was renamed '" + new_name + "')"));
-    const auto set_new = build_graph(GraphSource::from_string("nodes:\n  - {id: intruder, type: intruder}\n", "n.yaml"),
-                                     kestrel::testing::built_plugins().registry(), {"intruder." + new_name + "=2.0"});
-    EXPECT_TRUE(set_new.graph) << set_new.diagnostics.str();
-  }
-}

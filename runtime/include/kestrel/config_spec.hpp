@@ -92,6 +92,14 @@ class ConfigSpec {
     return *this;
   }
 
+  /// A rule that asks the graph to choose, as a required parameter does, among several: "left and
+  /// right, or video". The defaults may break it (they choose nothing); a graph may not.
+  ConfigSpec& requirement(std::string text, std::vector<std::string> params, std::function<bool(const Config&)> holds) {
+    rule(std::move(text), std::move(params), std::move(holds));
+    rules_.back().defaults_may_break = true;
+    return *this;
+  }
+
   /// Hands the declaration over to a NodeSpec or ComponentSpec.
   ParamSet release() && {
     ParamSet set;

@@ -1,12 +1,14 @@
 #pragma once
 // The single declaration of a node type: what it is called, what it does, its typed ports and
 // its parameters. Built by the node class's static spec() function.
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "kestrel/config_spec.hpp"
 #include "kestrel/param_spec.hpp"
+#include "kestrel/params.hpp"
 #include "kestrel/ports.hpp"
 
 namespace kestrel {
@@ -101,7 +103,19 @@ class NodeSpec : public SpecBase<NodeSpec> {
     return *this;
   }
 
+  /// The same, only when `applies` holds of the node's parameters (a bridge that subscribes to a
+  /// live bus needs the realtime executor; one that only publishes does not).
+  NodeSpec& needs_executor_when(ExecutorNeed need, std::string reason, std::function<bool(const Params&)> applies) {
+    needs_executor(need, std::move(reason));
+    executor_applies_ = std::move(applies);
+    return *this;
+  }
+
   const std::string& type() const { return type_; }
+  /// The executor a node of this type with `params` needs.
+  ExecutorNeed executor_need(const Params& params) const {
+    return executor_applies_ && !executor_applies_(params) ? ExecutorNeed::any : executor_need_;
+  }
   ExecutorNeed executor_need() const { return executor_need_; }
   const std::string& executor_reason() const { return executor_reason_; }
   const std::vector<PortSpec>& inputs() const { return inputs_; }
@@ -115,6 +129,7 @@ class NodeSpec : public SpecBase<NodeSpec> {
   std::string type_;
   ExecutorNeed executor_need_ = ExecutorNeed::any;
   std::string executor_reason_;
+  std::function<bool(const Params&)> executor_applies_;
   std::vector<PortSpec> inputs_;
   std::vector<PortSpec> outputs_;
 };

@@ -28,7 +28,6 @@ struct ParamSpec {
   std::string component_kind;         ///< for components: e.g. "associator"
   std::optional<std::size_t> length;  ///< for lists: the exact number of elements
   std::string description;
-  std::vector<std::string> former_names;  ///< names it had before a rename: refused, naming this one
   /// Writes a validated value into the field of a config struct it is bound to (empty if the
   /// parameter is not bound).
   std::function<void(void* config, const ParamValue&)> bind;
@@ -63,12 +62,6 @@ struct ParamSpec {
     description = std::move(text);
     return *this;
   }
-  /// The parameter's name before a rename (CHANGELOG.md says when): a graph that still uses it is
-  /// refused with the new name, not silently given the default.
-  ParamSpec& renamed_from(std::string old_name) {
-    former_names.push_back(std::move(old_name));
-    return *this;
-  }
 };
 
 /// A condition over several parameters (for example min_points <= max_points). The validator
@@ -77,6 +70,7 @@ struct ParamRule {
   std::string text;                 ///< the condition as a user reads it: "min_points <= max_points"
   std::vector<std::string> params;  ///< the parameters it reads
   std::function<bool(const void* config)> holds;
+  bool defaults_may_break = false;  ///< a choice the graph must make (ConfigSpec::requirement)
 };
 
 /// Every parameter of a node or component, the rules between them, and how to build the config

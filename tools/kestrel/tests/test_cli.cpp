@@ -396,6 +396,9 @@ connections:
   - {from: b.scaled, to: sink_b.in}
 )");
   EXPECT_EQ(run_cli({"validate", twice.string()}, &out), 0);
+  EXPECT_EQ(run_cli({"dot", twice.string()}, &out), 0);  // each part a cluster named by its namespace
+  EXPECT_THAT(out, HasSubstr("subgraph \"cluster_b\" {\n    label=\"b\";"));
+  EXPECT_THAT(out, HasSubstr("\"src\":out_out -> \"b/scale\":in_in"));
   EXPECT_EQ(run_cli({"run", twice.string(), "--set", "b/scale.factor=5", "--no-progress"}, &out), 0);
   ::unsetenv("KESTREL_PLUGIN_PATH");
 }
