@@ -13,11 +13,8 @@ std::string Diagnostic::str() const {
 
 // A part included twice is read twice: what is wrong in its file is said once.
 void Diagnostics::add(Diagnostic::Severity severity, SourceLocation where, std::string message) {
-  const auto same = [&](const Diagnostic& d) {
-    return d.severity == severity && d.message == message && d.where.str() == where.str();
-  };
-  if (std::none_of(items_.begin(), items_.end(), same))
-    items_.push_back({severity, std::move(where), std::move(message)});
+  Diagnostic d{severity, std::move(where), std::move(message)};
+  if (said_.insert(d.str()).second) items_.push_back(std::move(d));
 }
 
 void Diagnostics::error(SourceLocation where, std::string message) {

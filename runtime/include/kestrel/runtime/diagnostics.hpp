@@ -1,6 +1,7 @@
 #pragma once
 // Problems found while loading plugins or building a graph, each with file:line:col. The builder
 // collects every problem before it reports, so a user fixes a graph in one pass.
+#include <set>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,7 @@ class Diagnostics {
  private:
   void add(Diagnostic::Severity severity, SourceLocation where, std::string message);
   std::vector<Diagnostic> items_;
+  std::set<std::string> said_;  // each item's str(): a diagnostic is said once
 };
 
 /// The closest candidate to `word` by edit distance, or "" if none is close enough to be a
